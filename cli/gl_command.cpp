@@ -1,0 +1,106 @@
+#include "cli/gl_command.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "framebuffer/image_writer.hpp"
+#include "framebuffer/npy_writer.hpp"
+#include "pipeline/gl_context.hpp"
+#include "pipeline/gl_enums.hpp"
+#include "pipeline/gl_script.hpp"
+#include "pipeline/gl_script_runner.hpp"
+
+namespace mpr::cli {
+namespace {
+
+struct GlOptions {
+  std::string script;
+  std::string profile;
+  std::string dumpDir;
+  bool quiet = false;
+};
+
+int runGl(const GlOptions& o) {
+  Script script;
+  try {
+    script = loadScript(o.script);
+  } catch (const ScriptError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  std::string profileName = o.profile.empty() ? script.profile.value_or("indigo") : o.profile;
+  const auto profile = findProfile(profileName);
+  if (!profile) {
+    std::cerr << "mpr gl: unknown profile '" << profileName << "' (known: indigo, mesa)\n";
+    return 2;
+  }
+  std::unique_ptr<GLContext> gl;
+  try {
+    gl = std::make_unique<GLContext>(script.width, script.height, *profile);
+  } catch (const FramebufferSizeError& e) {
+    std::cerr << o.script << ": " << e.what() << "\n";
+    return 2;
+  }
+
+  // Snapshots are kept in memory and written with the final dumps, so an
+  // interrupted run leaves no partial set behind.
+  std::vector<NamedBytes> files;
+  std::size_t passes = 0;
+  ScriptHooks hooks;
+  hooks.onPass = [&](const ScriptCommand&) { ++passes; };
+  hooks.onGLError = [&](const ScriptCommand& c, std::uint32_t e) {
+    std::cerr << script.file << ":" << c.line << ": " << glErrorName(e) << " in " << glCallName(c.call) << "\n";
+  };
+  if (!o.dumpDir.empty())
+    hooks.onSnapshot = [&](const ScriptCommand& c, const GLContext& ctx) {
+      for (NamedBytes& nb : framebufferNpyDumps(ctx.framebuffer()))
+        files.push_back({c.label + "-" + nb.name + ".npy", std::move(nb.bytes)});
+    };
+  const std::size_t errors = runScript(script, *gl, hooks);
+
+  if (!o.dumpDir.empty()) {
+    try {
+      std::filesystem::create_directories(o.dumpDir);
+      for (NamedBytes& nb : framebufferNpyDumps(gl->framebuffer()))
+        files.push_back({nb.name + ".npy", std::move(nb.bytes)});
+      for (const NamedBytes& f : files) writeFileAtomically((std::filesystem::path(o.dumpDir) / f.name).string(), f.bytes);
+      writeColorImage(gl->framebuffer(), (std::filesystem::path(o.dumpDir) / "color.png").string());
+    } catch (const std::exception& e) {
+      std::cerr << "mpr gl: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  if (!o.quiet) {
+    const PipelineCounters& c = gl->counters();
+    std::cout << script.file << ": " << script.callCount() << " calls, " << passes << " passes, "
+              << c.triangles << " triangles, " << c.fragmentsTested << " fragments tested, "
+              << c.fragmentsWritten << " written, " << errors << " GL errors (" << profile->name << ", "
+              << script.width << "x" << script.height << ")\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addGlCommand(CLI::App& app, int& exitCode) {
+  auto opts = std::make_shared<GlOptions>();
+  CLI::App* gl = app.add_subcommand("gl", "Run a GL script (.gls) on the emulated pipeline");
+  gl->footer(
+      "The script format is spec/gl-script.md: one OpenGL 1.x call per line, @framebuffer W H,\n"
+      "@profile NAME, @pass LABEL, @snapshot NAME. Script errors print FILE:LINE:COLUMN and exit\n"
+      "with status 2 before anything is written. Calls GL rejects are reported as\n"
+      "FILE:LINE: GL_INVALID_... in glX and the run goes on.\n"
+      "With --dump DIR: color.npy depth.npy stencil.npy accum.npy color.png, and\n"
+      "NAME-<buffer>.npy for every @snapshot NAME.");
+  gl->add_option("script", opts->script, "GL script to run")->required();
+  gl->add_option("--profile", opts->profile, "hardware profile: indigo (default) or mesa; overrides @profile");
+  gl->add_option("--dump", opts->dumpDir, "write the final buffers (and snapshots) into this folder");
+  gl->add_flag("-q,--quiet", opts->quiet, "print no summary line");
+  gl->callback([opts, &exitCode] { exitCode = runGl(*opts); });
+}
+
+}  // namespace mpr::cli

@@ -1,0 +1,29 @@
+#pragma once
+// Replays a GL script through real OpenGL calls on Mesa's OSMesa
+// (llvmpipe or softpipe), with the buffer configuration of the `mesa` profile:
+// RGBA8, 24-bit depth, 8-bit stencil, 16-bit accumulation, Y up.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "conformance/buffer_set.hpp"
+#include "pipeline/gl_script.hpp"
+
+namespace mpr {
+
+class MesaUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct MesaReplay {
+  std::vector<BufferSet> snapshots;  // in script order, then "final"
+  std::vector<std::string> glErrors; // "LINE: GL_INVALID_ENUM in glX"
+  std::string renderer;              // GL_RENDERER as Mesa reports it
+};
+
+// `driver` is "llvmpipe" or "softpipe" (set through GALLIUM_DRIVER before the
+// context is created). Throws MesaUnavailable when no context can be made.
+MesaReplay replayOnMesa(const Script& script, const std::string& driver);
+
+}  // namespace mpr

@@ -1,0 +1,20 @@
+#pragma once
+// Runs a GL script on the emulator and collects the same buffer sets the Mesa
+// replayer collects (every @snapshot, then "final").
+#include <string>
+#include <vector>
+
+#include "conformance/buffer_set.hpp"
+#include "framebuffer/profile.hpp"
+#include "pipeline/gl_script.hpp"
+
+namespace mpr {
+
+struct MprReplay {
+  std::vector<BufferSet> snapshots;
+  std::vector<std::string> glErrors;  // "LINE: GL_INVALID_ENUM in glX"
+};
+
+MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile);
+
+}  // namespace mpr

@@ -1,0 +1,111 @@
+#include "framebuffer/accumulation.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace mpr {
+namespace {
+
+// C's (GLshort)(float) on x86-64: cvttss2si to a 32-bit integer (0x80000000 for
+// out-of-range and NaN), then the low 16 bits. Mesa relies on this conversion.
+std::int32_t truncToInt32(float f) {
+  if (!(f > -2147483648.0f && f < 2147483648.0f)) return INT32_MIN;
+  return static_cast<std::int32_t>(f);
+}
+
+std::int16_t wrap16(std::int64_t v) { return static_cast<std::int16_t>(static_cast<std::uint16_t>(v & 0xFFFF)); }
+
+std::int16_t saturate16(std::int64_t v) {
+  return static_cast<std::int16_t>(v < -32768 ? -32768 : (v > 32767 ? 32767 : v));
+}
+
+// A word produced by a product: truncated as Mesa does, then wrapped or clamped.
+std::int16_t productWord(float f, bool wraps) {
+  if (wraps) return wrap16(truncToInt32(f));
+  if (std::isnan(f)) return 0;
+  const float t = std::trunc(f);
+  return saturate16(t < -40000.0f ? -40000 : (t > 40000.0f ? 40000 : static_cast<std::int64_t>(t)));
+}
+
+std::int16_t sumWord(std::int32_t a, std::int32_t b, bool wraps) {
+  return wraps ? wrap16(std::int64_t{a} + b) : saturate16(std::int64_t{a} + b);
+}
+
+// Mesa's _mesa_float_to_unorm(x, 8): clamp, scale, round half to even.
+std::uint8_t unitToUnorm8(float x) {
+  if (!(x >= 0.0f)) return 0;
+  if (x > 1.0f) return 255;
+  return static_cast<std::uint8_t>(std::nearbyint(x * 255.0f));
+}
+
+}  // namespace
+
+std::int16_t accumClearWord(float v) {
+  // Mesa's FLOAT_TO_SHORT: ((int)(65535 * x) - 1) / 2, integer division.
+  const std::int32_t t = static_cast<std::int32_t>(65535.0f * v);
+  return static_cast<std::int16_t>((t - 1) / 2);
+}
+
+void accumulate(Framebuffer& fb, const PixelRect& region, AccumOp op, float value,
+                const std::array<bool, 4>& colorMask) {
+  const PixelRect r = region.intersect(fb.bounds());
+  if (r.empty()) return;
+  const bool wraps = fb.profile().accumArithmetic == AccumulationArithmetic::MesaWrap;
+  const int channels = fb.profile().accumHasAlpha ? 4 : 3;
+
+  // Mesa skips the identity operations entirely; the result is the same.
+  switch (op) {
+    case AccumOp::Add: {
+      if (value == 0.0f) return;
+      const std::int16_t incr = productWord(value * 32767.0f, wraps);
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+          std::int16_t* a = fb.accum(x, y);
+          for (int c = 0; c < channels; ++c) a[c] = sumWord(a[c], incr, wraps);
+        }
+      return;
+    }
+    case AccumOp::Mult: {
+      if (value == 1.0f) return;
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+          std::int16_t* a = fb.accum(x, y);
+          for (int c = 0; c < channels; ++c) a[c] = productWord(static_cast<float>(a[c]) * value, wraps);
+        }
+      return;
+    }
+    case AccumOp::Accum:
+    case AccumOp::Load: {
+      if (op == AccumOp::Accum && value == 0.0f) return;
+      const float scale = value * 32767.0f;
+      const float toUnit = 1.0f / 255.0f;
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+          std::int16_t* a = fb.accum(x, y);
+          const Rgba8& col = fb.color(x, y);
+          for (int c = 0; c < channels; ++c) {
+            const std::int16_t w = productWord(static_cast<float>(col[c]) * toUnit * scale, wraps);
+            a[c] = op == AccumOp::Load ? w : sumWord(a[c], w, wraps);
+          }
+        }
+      return;
+    }
+    case AccumOp::Return: {
+      const float scale = value / 32767.0f;
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) {
+          const std::int16_t* a = fb.accum(x, y);
+          Rgba8& col = fb.color(x, y);
+          for (int c = 0; c < 4; ++c) {
+            // An RGB-only buffer has no alpha word to return: destination
+            // alpha is left as it is (indigo).
+            if (!colorMask[c] || c >= channels) continue;
+            col[c] = unitToUnorm8(static_cast<float>(a[c]) * scale);
+          }
+        }
+      return;
+    }
+  }
+}
+
+}  // namespace mpr

@@ -1,0 +1,52 @@
+#pragma once
+// Per-fragment operations in GL order (GL 1.1 chapter 4.1): pixel ownership
+// and scissor (done by the caller through the raster bounds), alpha test,
+// stencil test, depth test, stencil update, blending, colour write mask.
+// Dithering is implementation-defined and not done (spec: scripts disable it).
+#include <array>
+#include <cstdint>
+
+#include "framebuffer/blend.hpp"
+#include "framebuffer/compare_func.hpp"
+#include "framebuffer/framebuffer.hpp"
+#include "framebuffer/stencil.hpp"
+
+namespace mpr {
+
+struct AlphaTestState {
+  bool enabled = false;
+  CompareFunc func = CompareFunc::Always;
+  float ref = 0.0f;  // clamped to [0, 1]
+};
+
+struct DepthTestState {
+  bool enabled = false;
+  CompareFunc func = CompareFunc::Less;
+  bool writeMask = true;
+};
+
+struct FragmentState {
+  AlphaTestState alpha;
+  StencilState stencil;
+  DepthTestState depth;
+  BlendState blend;
+  std::array<bool, 4> colorMask{true, true, true, true};
+};
+
+// One fragment as the rasterizer hands it over.
+struct Fragment {
+  int x, y;
+  std::uint32_t depth;  // window depth as the stored integer
+  Rgba8 color;          // already converted to the colour buffer's format
+  float alpha;          // unquantised alpha, for the alpha test
+};
+
+// What happened to one fragment, for statistics and the pass stepper.
+enum class FragmentFate : std::uint8_t { AlphaFailed, StencilFailed, DepthFailed, Written };
+
+// Float colour in [0, 1] to an 8-bit channel: clamp, scale, round to nearest even.
+std::uint8_t floatToUnorm8(float c);
+
+FragmentFate processFragment(const FragmentState& s, Framebuffer& fb, const Fragment& f);
+
+}  // namespace mpr

@@ -1,0 +1,375 @@
+// GLContext: construction, errors, framebuffer state, clears, per-fragment
+// state and accumulation. Transform, lighting and drawing live in their own
+// files (gl_context_transform.cpp, gl_context_lighting.cpp, gl_context_draw.cpp).
+#include "pipeline/gl_context.hpp"
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mpr {
+namespace {
+
+std::optional<CompareFunc> compareFuncFromGL(GLenumValue f) {
+  switch (f) {
+    case GL_NEVER: return CompareFunc::Never;
+    case GL_LESS: return CompareFunc::Less;
+    case GL_EQUAL: return CompareFunc::Equal;
+    case GL_LEQUAL: return CompareFunc::Lequal;
+    case GL_GREATER: return CompareFunc::Greater;
+    case GL_NOTEQUAL: return CompareFunc::Notequal;
+    case GL_GEQUAL: return CompareFunc::Gequal;
+    case GL_ALWAYS: return CompareFunc::Always;
+  }
+  return std::nullopt;
+}
+
+std::optional<StencilOp> stencilOpFromGL(GLenumValue op) {
+  switch (op) {
+    case GL_KEEP: return StencilOp::Keep;
+    case GL_ZERO: return StencilOp::Zero;
+    case GL_REPLACE: return StencilOp::Replace;
+    case GL_INCR: return StencilOp::Incr;
+    case GL_DECR: return StencilOp::Decr;
+    case GL_INVERT: return StencilOp::Invert;
+    case GL_INCR_WRAP: return StencilOp::IncrWrap;
+    case GL_DECR_WRAP: return StencilOp::DecrWrap;
+  }
+  return std::nullopt;
+}
+
+std::optional<BlendFactor> blendFactorFromGL(GLenumValue f, bool source) {
+  switch (f) {
+    case GL_ZERO: return BlendFactor::Zero;
+    case GL_ONE: return BlendFactor::One;
+    case GL_SRC_COLOR: return BlendFactor::SrcColor;
+    case GL_ONE_MINUS_SRC_COLOR: return BlendFactor::OneMinusSrcColor;
+    case GL_DST_COLOR: return BlendFactor::DstColor;
+    case GL_ONE_MINUS_DST_COLOR: return BlendFactor::OneMinusDstColor;
+    case GL_SRC_ALPHA: return BlendFactor::SrcAlpha;
+    case GL_ONE_MINUS_SRC_ALPHA: return BlendFactor::OneMinusSrcAlpha;
+    case GL_DST_ALPHA: return BlendFactor::DstAlpha;
+    case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::OneMinusDstAlpha;
+    case GL_SRC_ALPHA_SATURATE:
+      // GL 1.x accepts SRC_ALPHA_SATURATE as a source factor only.
+      if (source) return BlendFactor::SrcAlphaSaturate;
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
+
+}  // namespace
+
+GLContext::GLContext(int width, int height, const HardwareProfile& profile)
+    : fb_(width, height, profile),
+      cullMode_(GL_BACK),
+      frontFace_(GL_CCW),
+      modelview_(32),
+      projection_(32),
+      matrixMode_(GL_MODELVIEW),
+      colorMaterialFace_(GL_FRONT_AND_BACK),
+      colorMaterialMode_(GL_AMBIENT_AND_DIFFUSE) {
+  viewport(0, 0, width, height);
+  scissorBox_ = {0, 0, width, height};
+  clearValues_.depth = fb_.profile().depthMax();
+  lighting_.lights[0].diffuse = Vec4(1, 1, 1, 1);
+  lighting_.lights[0].specular = Vec4(1, 1, 1, 1);
+}
+
+std::array<std::int16_t, 4> GLContext::accumAt(int x, int y) const {
+  const std::int16_t* a = fb_.accum(x, y);
+  return {a[0], a[1], a[2], a[3]};
+}
+
+void GLContext::setError(GLenumValue e) {
+  if (error_ == GL_NO_ERROR) error_ = e;
+}
+
+GLenumValue GLContext::getError() {
+  const GLenumValue e = error_;
+  error_ = GL_NO_ERROR;
+  return e;
+}
+
+bool GLContext::checkOutsideBeginEnd() {
+  if (inBegin_) {
+    setError(GL_INVALID_OPERATION);
+    return false;
+  }
+  return true;
+}
+
+PixelRect GLContext::drawRegion() const {
+  PixelRect r = viewportBox_.intersect(fb_.bounds());
+  if (scissorEnabled_) r = r.intersect(scissorBox_);
+  return r;
+}
+
+// --- framebuffer and clears ---------------------------------------------------
+
+void GLContext::viewport(int x, int y, int w, int h) {
+  if (!checkOutsideBeginEnd()) return;
+  if (w < 0 || h < 0) return setError(GL_INVALID_VALUE);
+  w = std::min(w, Framebuffer::kMaxSide);
+  h = std::min(h, Framebuffer::kMaxSide);
+  viewportBox_ = {x, y, x + w, y + h};
+  // Mesa's viewport: scale = size / 2, translate = origin + size / 2.
+  vpScaleX_ = static_cast<float>(w) / 2.0f;
+  vpScaleY_ = static_cast<float>(h) / 2.0f;
+  vpTransX_ = static_cast<float>(x) + vpScaleX_;
+  vpTransY_ = static_cast<float>(y) + vpScaleY_;
+}
+
+void GLContext::scissor(int x, int y, int w, int h) {
+  if (!checkOutsideBeginEnd()) return;
+  if (w < 0 || h < 0) return setError(GL_INVALID_VALUE);
+  scissorBox_ = {x, y, x + w, y + h};
+}
+
+void GLContext::clearColor(float r, float g, float b, float a) {
+  if (!checkOutsideBeginEnd()) return;
+  clearValues_.color = {floatToUnorm8(clamp01(r)), floatToUnorm8(clamp01(g)), floatToUnorm8(clamp01(b)),
+                        floatToUnorm8(clamp01(a))};
+}
+
+void GLContext::clearDepth(double d) {
+  if (!checkOutsideBeginEnd()) return;
+  d = std::isnan(d) ? 0.0 : std::clamp(d, 0.0, 1.0);
+  // util_pack_z: round to nearest, 1.0 exactly to the maximum.
+  clearValues_.depth = static_cast<std::uint32_t>(std::nearbyint(d * fb_.profile().depthMax()));
+}
+
+void GLContext::clearStencil(int s) {
+  if (!checkOutsideBeginEnd()) return;
+  clearValues_.stencil = static_cast<std::uint32_t>(s) & fb_.profile().stencilMax();
+}
+
+void GLContext::clearAccum(float r, float g, float b, float a) {
+  if (!checkOutsideBeginEnd()) return;
+  const float v[4] = {r, g, b, a};
+  for (int i = 0; i < 4; ++i)
+    clearValues_.accum[i] = accumClearWord(std::isnan(v[i]) ? 0.0f : std::clamp(v[i], -1.0f, 1.0f));
+}
+
+void GLContext::clear(std::uint32_t mask) {
+  if (!checkOutsideBeginEnd()) return;
+  constexpr std::uint32_t kAll =
+      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+  if (mask & ~kAll) return setError(GL_INVALID_VALUE);
+  ClearBuffers which;
+  which.color = mask & GL_COLOR_BUFFER_BIT;
+  which.depth = mask & GL_DEPTH_BUFFER_BIT;
+  which.stencil = mask & GL_STENCIL_BUFFER_BIT;
+  which.accum = mask & GL_ACCUM_BUFFER_BIT;
+  const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
+  clearMasks_.color = frag_.colorMask;
+  clearMasks_.depth = frag_.depth.writeMask;
+  clearMasks_.stencil = frag_.stencil.writeMask;
+  clearBuffers(fb_, region, which, clearValues_, clearMasks_);
+}
+
+void GLContext::colorMask(bool r, bool g, bool b, bool a) {
+  if (!checkOutsideBeginEnd()) return;
+  frag_.colorMask = {r, g, b, a};
+}
+
+void GLContext::depthMask(bool flag) {
+  if (!checkOutsideBeginEnd()) return;
+  frag_.depth.writeMask = flag;
+}
+
+void GLContext::stencilMask(std::uint32_t mask) {
+  if (!checkOutsideBeginEnd()) return;
+  frag_.stencil.writeMask = mask & fb_.profile().stencilMax();
+}
+
+// --- per-fragment state ----------------------------------------------------------
+
+void GLContext::setCapability(GLenumValue cap, bool on) {
+  if (!checkOutsideBeginEnd()) return;
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) {
+    lighting_.lights[cap - GL_LIGHT0].enabled = on;
+    return;
+  }
+  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + 6) {
+    clipPlaneEnabled_[cap - GL_CLIP_PLANE0] = on;
+    return;
+  }
+  switch (cap) {
+    case GL_STENCIL_TEST: frag_.stencil.enabled = on; return;
+    case GL_DEPTH_TEST: frag_.depth.enabled = on; return;
+    case GL_BLEND: frag_.blend.enabled = on; return;
+    case GL_ALPHA_TEST: frag_.alpha.enabled = on; return;
+    case GL_SCISSOR_TEST: scissorEnabled_ = on; return;
+    case GL_CULL_FACE: cullEnabled_ = on; return;
+    case GL_FOG: fog_.enabled = on; return;
+    case GL_LIGHTING: lightingEnabled_ = on; return;
+    case GL_NORMALIZE: normalize_ = on; return;
+    case GL_DITHER: ditherEnabled_ = on; return;
+    case GL_COLOR_MATERIAL:
+      colorMaterialEnabled_ = on;
+      if (on) applyColorMaterial();
+      return;
+  }
+  setError(GL_INVALID_ENUM);
+}
+
+bool GLContext::isEnabled(GLenumValue cap) const {
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return lighting_.lights[cap - GL_LIGHT0].enabled;
+  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + 6) return clipPlaneEnabled_[cap - GL_CLIP_PLANE0];
+  switch (cap) {
+    case GL_STENCIL_TEST: return frag_.stencil.enabled;
+    case GL_DEPTH_TEST: return frag_.depth.enabled;
+    case GL_BLEND: return frag_.blend.enabled;
+    case GL_ALPHA_TEST: return frag_.alpha.enabled;
+    case GL_SCISSOR_TEST: return scissorEnabled_;
+    case GL_CULL_FACE: return cullEnabled_;
+    case GL_FOG: return fog_.enabled;
+    case GL_LIGHTING: return lightingEnabled_;
+    case GL_NORMALIZE: return normalize_;
+    case GL_DITHER: return ditherEnabled_;
+    case GL_COLOR_MATERIAL: return colorMaterialEnabled_;
+  }
+  return false;
+}
+
+void GLContext::stencilFunc(GLenumValue func, int ref, std::uint32_t mask) {
+  if (!checkOutsideBeginEnd()) return;
+  const auto f = compareFuncFromGL(func);
+  if (!f) return setError(GL_INVALID_ENUM);
+  frag_.stencil.func = *f;
+  // GL: "ref is clamped to the range [0, 2^s - 1]".
+  stencilRefUnclamped_ = ref;
+  frag_.stencil.ref = static_cast<std::uint32_t>(std::clamp<int>(ref, 0, fb_.profile().stencilMax()));
+  frag_.stencil.valueMask = mask & fb_.profile().stencilMax();
+}
+
+void GLContext::stencilOp(GLenumValue sfail, GLenumValue dpfail, GLenumValue dppass) {
+  if (!checkOutsideBeginEnd()) return;
+  const auto a = stencilOpFromGL(sfail), b = stencilOpFromGL(dpfail), c = stencilOpFromGL(dppass);
+  if (!a || !b || !c) return setError(GL_INVALID_ENUM);
+  frag_.stencil.sfail = *a;
+  frag_.stencil.dpfail = *b;
+  frag_.stencil.dppass = *c;
+}
+
+void GLContext::depthFunc(GLenumValue func) {
+  if (!checkOutsideBeginEnd()) return;
+  const auto f = compareFuncFromGL(func);
+  if (!f) return setError(GL_INVALID_ENUM);
+  frag_.depth.func = *f;
+}
+
+void GLContext::depthRange(double n, double f) {
+  if (!checkOutsideBeginEnd()) return;
+  depthNear_ = std::isnan(n) ? 0.0 : std::clamp(n, 0.0, 1.0);
+  depthFar_ = std::isnan(f) ? 0.0 : std::clamp(f, 0.0, 1.0);
+}
+
+void GLContext::blendFunc(GLenumValue src, GLenumValue dst) {
+  if (!checkOutsideBeginEnd()) return;
+  const auto s = blendFactorFromGL(src, true), d = blendFactorFromGL(dst, false);
+  if (!s || !d) return setError(GL_INVALID_ENUM);
+  frag_.blend.src = *s;
+  frag_.blend.dst = *d;
+}
+
+void GLContext::alphaFunc(GLenumValue func, float ref) {
+  if (!checkOutsideBeginEnd()) return;
+  const auto f = compareFuncFromGL(func);
+  if (!f) return setError(GL_INVALID_ENUM);
+  frag_.alpha.func = *f;
+  frag_.alpha.ref = std::isnan(ref) ? 0.0f : clamp01(ref);
+}
+
+void GLContext::cullFace(GLenumValue mode) {
+  if (!checkOutsideBeginEnd()) return;
+  if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return setError(GL_INVALID_ENUM);
+  cullMode_ = mode;
+}
+
+void GLContext::frontFace(GLenumValue mode) {
+  if (!checkOutsideBeginEnd()) return;
+  if (mode != GL_CW && mode != GL_CCW) return setError(GL_INVALID_ENUM);
+  frontFace_ = mode;
+}
+
+void GLContext::shadeModel(GLenumValue mode) {
+  if (!checkOutsideBeginEnd()) return;
+  if (mode != GL_FLAT && mode != GL_SMOOTH) return setError(GL_INVALID_ENUM);
+  flatShading_ = mode == GL_FLAT;
+}
+
+void GLContext::fogf(GLenumValue pname, float param) {
+  if (!checkOutsideBeginEnd()) return;
+  switch (pname) {
+    case GL_FOG_MODE: {
+      const auto m = static_cast<GLenumValue>(param);
+      if (static_cast<float>(m) != param) return setError(GL_INVALID_ENUM);
+      if (m == GL_LINEAR) fog_.mode = FogMode::Linear;
+      else if (m == GL_EXP) fog_.mode = FogMode::Exp;
+      else if (m == GL_EXP2) fog_.mode = FogMode::Exp2;
+      else return setError(GL_INVALID_ENUM);
+      return;
+    }
+    case GL_FOG_DENSITY:
+      if (param < 0.0f) return setError(GL_INVALID_VALUE);
+      fog_.density = param;
+      return;
+    case GL_FOG_START: fog_.start = param; return;
+    case GL_FOG_END: fog_.end = param; return;
+    case GL_FOG_INDEX: return;  // colour-index mode only
+  }
+  setError(GL_INVALID_ENUM);
+}
+
+void GLContext::fogfv(GLenumValue pname, const float* p, int count) {
+  if (!checkOutsideBeginEnd()) return;
+  if (pname == GL_FOG_COLOR) {
+    if (count < 4) return setError(GL_INVALID_VALUE);
+    fog_.color = Vec4(clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), clamp01(p[3]));
+    return;
+  }
+  if (count < 1) return setError(GL_INVALID_VALUE);
+  fogf(pname, p[0]);
+}
+
+void GLContext::hint(GLenumValue target, GLenumValue mode) {
+  if (!checkOutsideBeginEnd()) return;
+  if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return setError(GL_INVALID_ENUM);
+  switch (target) {
+    case GL_FOG_HINT:
+      // GL_FASTEST: fog per vertex; otherwise per fragment, as Mesa does.
+      fog_.perFragment = mode != GL_FASTEST;
+      return;
+    case GL_PERSPECTIVE_CORRECTION_HINT:
+    case GL_POINT_SMOOTH_HINT:
+    case GL_LINE_SMOOTH_HINT:
+    case GL_POLYGON_SMOOTH_HINT:
+      return;  // accepted; this pipeline always interpolates perspective-correctly
+  }
+  setError(GL_INVALID_ENUM);
+}
+
+// --- accumulation ---------------------------------------------------------------
+
+void GLContext::accum(GLenumValue op, float value) {
+  if (!checkOutsideBeginEnd()) return;
+  AccumOp a;
+  switch (op) {
+    case GL_ACCUM: a = AccumOp::Accum; break;
+    case GL_LOAD: a = AccumOp::Load; break;
+    case GL_RETURN: a = AccumOp::Return; break;
+    case GL_MULT: a = AccumOp::Mult; break;
+    case GL_ADD: a = AccumOp::Add; break;
+    default: return setError(GL_INVALID_ENUM);
+  }
+  // Accumulation works on the scissored window, like a clear.
+  const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
+  accumulate(fb_, region, a, value, frag_.colorMask);
+}
+
+}  // namespace mpr

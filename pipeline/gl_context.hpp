@@ -1,0 +1,217 @@
+#pragma once
+// The GL 1.x state machine of the emulated Iris pipeline: the spec's whole
+// call set (spec/gl-script.md), executed on a Framebuffer. Methods take GL's
+// own enum values (as <GL/gl.h> defines them), so a script, a test and the
+// Mesa replayer speak the same numbers. GL errors follow GL: the call is
+// ignored and the first error is kept until getError() reads it.
+//
+// For per-pixel tests the context also answers what is stored at a pixel:
+//   gl.stencilAt(3, 4), gl.depthAt(x, y), gl.colorAt(x, y), gl.accumAt(x, y).
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "framebuffer/accumulation.hpp"
+#include "framebuffer/clear.hpp"
+#include "framebuffer/fragment_ops.hpp"
+#include "framebuffer/framebuffer.hpp"
+#include "pipeline/clipping.hpp"
+#include "pipeline/fog.hpp"
+#include "pipeline/lighting.hpp"
+#include "pipeline/matrix_stack.hpp"
+#include "pipeline/primitive_assembly.hpp"
+#include "pipeline/vecmath.hpp"
+
+namespace mpr {
+
+using GLenumValue = std::uint32_t;
+
+// Counters a renderer reports with --stats and a benchmark divides by time.
+struct PipelineCounters {
+  std::uint64_t triangles = 0;        // after primitive assembly
+  std::uint64_t trianglesDrawn = 0;   // survived clipping and culling
+  std::uint64_t fragmentsTested = 0;  // covered pixels entering the per-fragment tests
+  std::uint64_t fragmentsWritten = 0; // passed every test
+};
+
+// A fragment event for observers (the pass stepper's pixel history).
+struct FragmentEvent {
+  int x, y;
+  std::uint8_t stencilBefore, stencilAfter;
+  std::uint32_t depthBefore, depthIncoming;
+  FragmentFate fate;
+  Rgba8 colorAfter;
+};
+
+class GLContext {
+ public:
+  GLContext(int width, int height, const HardwareProfile& profile);
+
+  Framebuffer& framebuffer() { return fb_; }
+  const Framebuffer& framebuffer() const { return fb_; }
+  const PipelineCounters& counters() const { return counters_; }
+
+  // --- per-pixel inspection for tests -----------------------------------
+  std::uint32_t stencilAt(int x, int y) const { return fb_.stencil(x, y); }
+  std::uint32_t depthAt(int x, int y) const { return fb_.depth(x, y); }
+  Rgba8 colorAt(int x, int y) const { return fb_.color(x, y); }
+  std::array<std::int16_t, 4> accumAt(int x, int y) const;
+
+  // --- errors -------------------------------------------------------------
+  GLenumValue getError();  // GL_NO_ERROR (0) when none is pending
+
+  // --- framebuffer and clears ----------------------------------------------
+  void viewport(int x, int y, int w, int h);
+  void scissor(int x, int y, int w, int h);
+  void clearColor(float r, float g, float b, float a);
+  void clearDepth(double d);
+  void clearStencil(int s);
+  void clearAccum(float r, float g, float b, float a);
+  void clear(std::uint32_t mask);
+  void colorMask(bool r, bool g, bool b, bool a);
+  void depthMask(bool flag);
+  void stencilMask(std::uint32_t mask);
+  void finish() {}
+  void flush() {}
+
+  // --- per-fragment state ---------------------------------------------------
+  void enable(GLenumValue cap) { setCapability(cap, true); }
+  void disable(GLenumValue cap) { setCapability(cap, false); }
+  bool isEnabled(GLenumValue cap) const;
+  void stencilFunc(GLenumValue func, int ref, std::uint32_t mask);
+  void stencilOp(GLenumValue sfail, GLenumValue dpfail, GLenumValue dppass);
+  void depthFunc(GLenumValue func);
+  void depthRange(double n, double f);
+  void blendFunc(GLenumValue src, GLenumValue dst);
+  void alphaFunc(GLenumValue func, float ref);
+  void cullFace(GLenumValue mode);
+  void frontFace(GLenumValue mode);
+  void shadeModel(GLenumValue mode);
+  void fogf(GLenumValue pname, float param);
+  void fogi(GLenumValue pname, int param) { fogf(pname, static_cast<float>(param)); }
+  void fogfv(GLenumValue pname, const float* params, int count);
+  void hint(GLenumValue target, GLenumValue mode);
+
+  // --- transform --------------------------------------------------------------
+  void matrixMode(GLenumValue mode);
+  void loadIdentity();
+  void loadMatrix(const float m[16]);
+  void multMatrix(const float m[16]);
+  void pushMatrix();
+  void popMatrix();
+  void translate(float x, float y, float z);
+  void rotate(float angle, float x, float y, float z);
+  void scale(float x, float y, float z);
+  void frustum(double l, double r, double b, double t, double n, double f);
+  void ortho(double l, double r, double b, double t, double n, double f);
+  void perspective(double fovy, double aspect, double zNear, double zFar);  // gluPerspective
+  void lookAt(double ex, double ey, double ez, double cx, double cy, double cz, double ux, double uy,
+              double uz);  // gluLookAt
+  void clipPlane(GLenumValue plane, const double eq[4]);
+  const Mat4& modelview() const { return modelview_.top(); }
+  const Mat4& projection() const { return projection_.top(); }
+
+  // --- lighting and colour -----------------------------------------------------
+  void lightf(GLenumValue light, GLenumValue pname, float param);
+  void lightfv(GLenumValue light, GLenumValue pname, const float* params, int count);
+  void lightModelf(GLenumValue pname, float param);
+  void lightModelfv(GLenumValue pname, const float* params, int count);
+  void lightModeli(GLenumValue pname, int param) { lightModelf(pname, static_cast<float>(param)); }
+  void materialf(GLenumValue face, GLenumValue pname, float param);
+  void materialfv(GLenumValue face, GLenumValue pname, const float* params, int count);
+  void colorMaterial(GLenumValue face, GLenumValue mode);
+  void color4f(float r, float g, float b, float a);
+  void color4ub(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a);
+  void normal3f(float x, float y, float z);
+
+  // --- geometry -------------------------------------------------------------------
+  void begin(GLenumValue mode);
+  void end();
+  void vertex4f(float x, float y, float z, float w);
+  void rectf(float x1, float y1, float x2, float y2);
+  bool insideBeginEnd() const { return inBegin_; }
+
+  // --- accumulation --------------------------------------------------------------
+  void accum(GLenumValue op, float value);
+
+  // --- state a pass stepper or test reads ----------------------------------------
+  const FragmentState& fragmentState() const { return frag_; }
+  const FogState& fogState() const { return fog_; }
+  PixelRect scissorBox() const { return scissorBox_; }
+  bool scissorEnabled() const { return scissorEnabled_; }
+  PixelRect viewportBox() const { return viewportBox_; }
+
+  // Observes every fragment that reaches the per-fragment tests; costs nothing
+  // when unset.
+  std::function<void(const FragmentEvent&)> fragmentObserver;
+
+ private:
+  struct Vertex {  // what glVertex captures, processed at glEnd
+    Vec4 object;
+    Vec4 color;
+    Vec3 normal;
+  };
+
+  void setError(GLenumValue e);
+  bool checkOutsideBeginEnd();
+  void setCapability(GLenumValue cap, bool on);
+  MatrixStack& currentStack();
+  void afterMatrixChange();
+  void applyColorMaterial();
+  ClipVertex processVertex(const Vertex& v) const;
+  void drawTriangle(const std::array<ClipVertex, 3>& tri);
+  void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c);
+  PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
+
+  Framebuffer fb_;
+  GLenumValue error_ = 0;
+  PipelineCounters counters_;
+
+  // framebuffer state
+  PixelRect viewportBox_;
+  float vpScaleX_, vpScaleY_, vpTransX_, vpTransY_;
+  double depthNear_ = 0.0, depthFar_ = 1.0;
+  PixelRect scissorBox_;
+  bool scissorEnabled_ = false;
+  ClearValues clearValues_;
+  ClearMasks clearMasks_;
+  std::array<float, 4> clearAccumValue_{0, 0, 0, 0};
+  FragmentState frag_;
+  int stencilRefUnclamped_ = 0;
+
+  // rasterization state
+  bool cullEnabled_ = false;
+  GLenumValue cullMode_;
+  GLenumValue frontFace_;
+  bool flatShading_ = false;
+  bool ditherEnabled_ = true;
+
+  // transform state
+  MatrixStack modelview_, projection_;
+  GLenumValue matrixMode_;
+  std::array<ClipPlane, 6> clipPlanesEye_{};
+  std::array<bool, 6> clipPlaneEnabled_{};
+  bool normalize_ = false;
+
+  // lighting, colour, fog
+  bool lightingEnabled_ = false;
+  LightingState lighting_;
+  bool colorMaterialEnabled_ = false;
+  GLenumValue colorMaterialFace_, colorMaterialMode_;
+  Vec4 currentColor_{1, 1, 1, 1};
+  Vec3 currentNormal_{0, 0, 1};
+  FogState fog_;
+
+  // begin/end
+  bool inBegin_ = false;
+  PrimitiveType primitive_ = PrimitiveType::Triangles;
+  std::vector<Vertex> vertices_;
+  // per-draw derived state, computed at glEnd
+  Mat4 mvp_;
+  glm::mat3 normalMatrix_;
+  std::vector<ClipPlane> clipPlanesClip_;
+};
+
+}  // namespace mpr

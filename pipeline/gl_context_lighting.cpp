@@ -1,0 +1,148 @@
+// GLContext: lights, light model, materials, colour material, current colour
+// and normal.
+#include <GL/gl.h>
+
+#include <algorithm>
+
+#include "pipeline/gl_context.hpp"
+
+namespace mpr {
+namespace {
+Vec4 vec4From(const float* p) { return Vec4(p[0], p[1], p[2], p[3]); }
+int expectedCount(GLenumValue pname) {
+  switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: case GL_EMISSION:
+    case GL_AMBIENT_AND_DIFFUSE: case GL_LIGHT_MODEL_AMBIENT:
+      return 4;
+    case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES:
+      return 3;
+    default:
+      return 1;
+  }
+}
+}  // namespace
+
+void GLContext::lightf(GLenumValue light, GLenumValue pname, float param) {
+  if (expectedCount(pname) != 1) {
+    // glLightf only takes the scalar parameters.
+    if (!checkOutsideBeginEnd()) return;
+    return setError(GL_INVALID_ENUM);
+  }
+  const float p[4] = {param, 0, 0, 0};
+  lightfv(light, pname, p, 1);
+}
+
+void GLContext::lightfv(GLenumValue light, GLenumValue pname, const float* p, int count) {
+  if (!checkOutsideBeginEnd()) return;
+  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) return setError(GL_INVALID_ENUM);
+  if (count < expectedCount(pname)) return setError(GL_INVALID_VALUE);
+  LightSource& l = lighting_.lights[light - GL_LIGHT0];
+  const Mat4& mv = modelview_.top();
+  switch (pname) {
+    case GL_AMBIENT: l.ambient = vec4From(p); return;
+    case GL_DIFFUSE: l.diffuse = vec4From(p); return;
+    case GL_SPECULAR: l.specular = vec4From(p); return;
+    case GL_POSITION: l.position = mv * vec4From(p); return;  // eye space at specification
+    case GL_SPOT_DIRECTION: l.spotDirection = glm::mat3(mv) * Vec3(p[0], p[1], p[2]); return;
+    case GL_SPOT_EXPONENT:
+      if (p[0] < 0.0f || p[0] > 128.0f) return setError(GL_INVALID_VALUE);
+      l.spotExponent = p[0];
+      return;
+    case GL_SPOT_CUTOFF:
+      if ((p[0] < 0.0f || p[0] > 90.0f) && p[0] != 180.0f) return setError(GL_INVALID_VALUE);
+      l.spotCutoff = p[0];
+      return;
+    case GL_CONSTANT_ATTENUATION:
+    case GL_LINEAR_ATTENUATION:
+    case GL_QUADRATIC_ATTENUATION:
+      if (p[0] < 0.0f) return setError(GL_INVALID_VALUE);
+      (pname == GL_CONSTANT_ATTENUATION ? l.constantAttenuation
+       : pname == GL_LINEAR_ATTENUATION ? l.linearAttenuation
+                                        : l.quadraticAttenuation) = p[0];
+      return;
+  }
+  setError(GL_INVALID_ENUM);
+}
+
+void GLContext::lightModelf(GLenumValue pname, float param) {
+  if (pname == GL_LIGHT_MODEL_AMBIENT) {
+    if (!checkOutsideBeginEnd()) return;
+    return setError(GL_INVALID_ENUM);
+  }
+  const float p[4] = {param, 0, 0, 0};
+  lightModelfv(pname, p, 1);
+}
+
+void GLContext::lightModelfv(GLenumValue pname, const float* p, int count) {
+  if (!checkOutsideBeginEnd()) return;
+  if (count < expectedCount(pname)) return setError(GL_INVALID_VALUE);
+  switch (pname) {
+    case GL_LIGHT_MODEL_AMBIENT: lighting_.model.ambient = vec4From(p); return;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: lighting_.model.localViewer = p[0] != 0.0f; return;
+    case GL_LIGHT_MODEL_TWO_SIDE: lighting_.model.twoSide = p[0] != 0.0f; return;
+  }
+  setError(GL_INVALID_ENUM);
+}
+
+void GLContext::materialf(GLenumValue face, GLenumValue pname, float param) {
+  if (pname != GL_SHININESS) {
+    if (!checkOutsideBeginEnd()) return;  // (materials are legal inside glBegin)
+    return setError(GL_INVALID_ENUM);
+  }
+  const float p[4] = {param, 0, 0, 0};
+  materialfv(face, pname, p, 1);
+}
+
+void GLContext::materialfv(GLenumValue face, GLenumValue pname, const float* p, int count) {
+  // glMaterial is one of the calls GL allows between glBegin and glEnd.
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return setError(GL_INVALID_ENUM);
+  if (count < expectedCount(pname)) return setError(GL_INVALID_VALUE);
+  if (pname == GL_SHININESS && (p[0] < 0.0f || p[0] > 128.0f)) return setError(GL_INVALID_VALUE);
+  for (int side = 0; side < 2; ++side) {
+    if ((side == 0 && face == GL_BACK) || (side == 1 && face == GL_FRONT)) continue;
+    Material& m = lighting_.material[side];
+    switch (pname) {
+      case GL_AMBIENT: m.ambient = vec4From(p); break;
+      case GL_DIFFUSE: m.diffuse = vec4From(p); break;
+      case GL_SPECULAR: m.specular = vec4From(p); break;
+      case GL_EMISSION: m.emission = vec4From(p); break;
+      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = vec4From(p); break;
+      case GL_SHININESS: m.shininess = p[0]; break;
+      case GL_COLOR_INDEXES: break;
+      default: return setError(GL_INVALID_ENUM);
+    }
+  }
+}
+
+void GLContext::colorMaterial(GLenumValue face, GLenumValue mode) {
+  if (!checkOutsideBeginEnd()) return;
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return setError(GL_INVALID_ENUM);
+  if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
+      mode != GL_AMBIENT_AND_DIFFUSE)
+    return setError(GL_INVALID_ENUM);
+  colorMaterialFace_ = face;
+  colorMaterialMode_ = mode;
+  if (colorMaterialEnabled_) applyColorMaterial();
+}
+
+void GLContext::applyColorMaterial() {
+  // While GL_COLOR_MATERIAL is enabled the selected material parameter tracks
+  // the current colour (GL 1.1 section 2.13.3).
+  const float c[4] = {currentColor_.r, currentColor_.g, currentColor_.b, currentColor_.a};
+  const bool wasInBegin = inBegin_;
+  materialfv(colorMaterialFace_, colorMaterialMode_, c, 4);
+  inBegin_ = wasInBegin;
+}
+
+void GLContext::color4f(float r, float g, float b, float a) {
+  currentColor_ = Vec4(r, g, b, a);
+  if (colorMaterialEnabled_) applyColorMaterial();
+}
+
+void GLContext::color4ub(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a) {
+  color4f(r / 255.0f, g / 255.0f, b / 255.0f, a / 255.0f);
+}
+
+void GLContext::normal3f(float x, float y, float z) { currentNormal_ = Vec3(x, y, z); }
+
+}  // namespace mpr

@@ -1,0 +1,486 @@
+#include "pipeline/gl_script.hpp"
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "framebuffer/framebuffer.hpp"
+#include "framebuffer/profile.hpp"
+#include "pipeline/gl_enums.hpp"
+
+namespace mpr {
+namespace {
+
+// Argument kinds of the signature table.
+//   i integer, f float, e enum, b bitfield, z boolean, u unsigned byte,
+//   m 16 floats (matrix), v the rest as floats (count fixed by the pname)
+struct CallSpec {
+  std::string_view name;
+  GLCall call;
+  std::string_view args;
+};
+
+constexpr CallSpec kCalls[] = {
+    {"glViewport", GLCall::Viewport, "iiii"},
+    {"glScissor", GLCall::Scissor, "iiii"},
+    {"glClearColor", GLCall::ClearColor, "ffff"},
+    {"glClearDepth", GLCall::ClearDepth, "f"},
+    {"glClearStencil", GLCall::ClearStencil, "i"},
+    {"glClearAccum", GLCall::ClearAccum, "ffff"},
+    {"glClear", GLCall::Clear, "b"},
+    {"glColorMask", GLCall::ColorMask, "zzzz"},
+    {"glDepthMask", GLCall::DepthMask, "z"},
+    {"glStencilMask", GLCall::StencilMask, "i"},
+    {"glFinish", GLCall::Finish, ""},
+    {"glFlush", GLCall::Flush, ""},
+    {"glEnable", GLCall::Enable, "e"},
+    {"glDisable", GLCall::Disable, "e"},
+    {"glStencilFunc", GLCall::StencilFunc, "eii"},
+    {"glStencilOp", GLCall::StencilOp, "eee"},
+    {"glDepthFunc", GLCall::DepthFunc, "e"},
+    {"glDepthRange", GLCall::DepthRange, "ff"},
+    {"glBlendFunc", GLCall::BlendFunc, "ee"},
+    {"glAlphaFunc", GLCall::AlphaFunc, "ef"},
+    {"glCullFace", GLCall::CullFace, "e"},
+    {"glFrontFace", GLCall::FrontFace, "e"},
+    {"glShadeModel", GLCall::ShadeModel, "e"},
+    {"glFogf", GLCall::Fogf, "ef"},
+    {"glFogi", GLCall::Fogi, "ei"},
+    {"glFogfv", GLCall::Fogfv, "ev"},
+    {"glHint", GLCall::Hint, "ee"},
+    {"glMatrixMode", GLCall::MatrixMode, "e"},
+    {"glLoadIdentity", GLCall::LoadIdentity, ""},
+    {"glLoadMatrixf", GLCall::LoadMatrixf, "m"},
+    {"glLoadMatrixd", GLCall::LoadMatrixd, "m"},
+    {"glMultMatrixf", GLCall::MultMatrixf, "m"},
+    {"glMultMatrixd", GLCall::MultMatrixd, "m"},
+    {"glPushMatrix", GLCall::PushMatrix, ""},
+    {"glPopMatrix", GLCall::PopMatrix, ""},
+    {"glTranslatef", GLCall::Translatef, "fff"},
+    {"glTranslated", GLCall::Translated, "fff"},
+    {"glRotatef", GLCall::Rotatef, "ffff"},
+    {"glRotated", GLCall::Rotated, "ffff"},
+    {"glScalef", GLCall::Scalef, "fff"},
+    {"glScaled", GLCall::Scaled, "fff"},
+    {"glFrustum", GLCall::Frustum, "ffffff"},
+    {"glOrtho", GLCall::Ortho, "ffffff"},
+    {"gluPerspective", GLCall::Perspective, "ffff"},
+    {"gluLookAt", GLCall::LookAt, "fffffffff"},
+    {"glClipPlane", GLCall::ClipPlane, "effff"},
+    {"glLightf", GLCall::Lightf, "eef"},
+    {"glLightfv", GLCall::Lightfv, "eev"},
+    {"glLightModelf", GLCall::LightModelf, "ef"},
+    {"glLightModelfv", GLCall::LightModelfv, "ev"},
+    {"glLightModeli", GLCall::LightModeli, "ei"},
+    {"glMaterialf", GLCall::Materialf, "eef"},
+    {"glMaterialfv", GLCall::Materialfv, "eev"},
+    {"glColorMaterial", GLCall::ColorMaterial, "ee"},
+    {"glColor3f", GLCall::Color3f, "fff"},
+    {"glColor4f", GLCall::Color4f, "ffff"},
+    {"glColor3ub", GLCall::Color3ub, "uuu"},
+    {"glColor4ub", GLCall::Color4ub, "uuuu"},
+    {"glNormal3f", GLCall::Normal3f, "fff"},
+    {"glBegin", GLCall::Begin, "e"},
+    {"glEnd", GLCall::End, ""},
+    {"glVertex2f", GLCall::Vertex2f, "ff"},
+    {"glVertex3f", GLCall::Vertex3f, "fff"},
+    {"glVertex4f", GLCall::Vertex4f, "ffff"},
+    {"glRectf", GLCall::Rectf, "ffff"},
+    {"glAccum", GLCall::Accum, "ef"},
+};
+
+const CallSpec* findCall(std::string_view name) {
+  for (const CallSpec& c : kCalls)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+// Capabilities and modes that GL accepts but the emulated Iris subset does not
+// implement: a script using them is outside the call set (a script error),
+// not a GL error, since real GL would act on them.
+const std::set<std::uint32_t>& unsupportedCapabilities() {
+  static const std::set<std::uint32_t> caps = {
+      GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
+      GL_TEXTURE_GEN_Q, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH,
+      GL_POLYGON_STIPPLE, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
+      GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP, GL_AUTO_NORMAL, GL_MAP1_VERTEX_3, GL_MAP2_VERTEX_3,
+      GL_RESCALE_NORMAL, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_3D,
+      GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_COLOR_SUM, GL_DEPTH_CLAMP, GL_STENCIL_TEST_TWO_SIDE_EXT,
+  };
+  return caps;
+}
+
+std::string closestCallName(std::string_view name) {
+  // Edit distance to the nearest name in the call set, for "did you mean".
+  auto distance = [](std::string_view a, std::string_view b) {
+    std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      cur[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j)
+        cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1,
+                           prev[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
+      prev.swap(cur);
+    }
+    return prev[b.size()];
+  };
+  std::string best;
+  size_t bestD = 4;
+  for (const CallSpec& c : kCalls) {
+    const size_t d = distance(name, c.name);
+    if (d < bestD) {
+      bestD = d;
+      best = std::string(c.name);
+    }
+  }
+  return best;
+}
+
+// The number of values a `...v` call takes for its pname, or 0 when the pname
+// is not one the function takes (GL will reject it; any 1..4 values parse).
+int vectorCount(GLCall call, std::uint32_t pname) {
+  switch (call) {
+    case GLCall::Lightfv:
+      switch (pname) {
+        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
+        case GL_SPOT_DIRECTION: return 3;
+        case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
+        case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: return 1;
+      }
+      return 0;
+    case GLCall::Materialfv:
+      switch (pname) {
+        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: return 4;
+        case GL_COLOR_INDEXES: return 3;
+        case GL_SHININESS: return 1;
+      }
+      return 0;
+    case GLCall::Fogfv:
+      switch (pname) {
+        case GL_FOG_COLOR: return 4;
+        case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END: case GL_FOG_INDEX: return 1;
+      }
+      return 0;
+    case GLCall::LightModelfv:
+      switch (pname) {
+        case GL_LIGHT_MODEL_AMBIENT: return 4;
+        case GL_LIGHT_MODEL_LOCAL_VIEWER: case GL_LIGHT_MODEL_TWO_SIDE: return 1;
+      }
+      return 0;
+    default: return 0;
+  }
+}
+
+struct Token {
+  std::string_view text;
+  int column;  // 1-based
+};
+
+std::vector<Token> tokenize(std::string_view line) {
+  std::vector<Token> out;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size() || line[i] == '#') break;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') ++i;
+    out.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+  }
+  return out;
+}
+
+class Parser {
+ public:
+  Parser(const std::string& file) : file_(file) {}
+
+  [[noreturn]] void fail(int line, int column, const std::string& message) const {
+    throw ScriptError(file_, line, column, message);
+  }
+
+  std::optional<double> parseNumber(std::string_view t) const {
+    std::string s(t);
+    if (!s.empty() && (s.back() == 'f' || s.back() == 'F') && s.find_first_of("0123456789") != std::string::npos &&
+        s.rfind("0x", 0) != 0 && s.rfind("-0x", 0) != 0 && s.rfind("+0x", 0) != 0)
+      s.pop_back();  // C float suffix
+    if (s.empty()) return std::nullopt;
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size()) return std::nullopt;
+    return v;
+  }
+
+  std::optional<long long> parseInteger(std::string_view t) const {
+    std::string s(t);
+    if (s.empty()) return std::nullopt;
+    size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
+    int base = 10;
+    if (s.size() > i + 1 && s[i] == '0' && (s[i + 1] == 'x' || s[i + 1] == 'X')) base = 16;
+    if (i >= s.size()) return std::nullopt;
+    errno = 0;
+    char* end = nullptr;
+    const long long v = std::strtoll(s.c_str(), &end, base);
+    if (end != s.c_str() + s.size() || errno == ERANGE) return std::nullopt;
+    if (base == 16 && s.size() <= i + 2) return std::nullopt;
+    return v;
+  }
+
+  ScriptArg parseArg(char kind, const Token& tok, int line, std::string_view callName, int index) const {
+    ScriptArg a;
+    a.column = tok.column;
+    a.text = std::string(tok.text);
+    const std::string where = "argument " + std::to_string(index + 1) + " of " + std::string(callName);
+    const bool isName = tok.text.rfind("GL_", 0) == 0;
+    if (isName && kind != 'b') {
+      const auto v = glEnumValue(tok.text);
+      if (!v) fail(line, tok.column, "unknown GL enumerant '" + a.text + "' (" + where + ")");
+      if (kind == 'z' && *v != GL_TRUE && *v != GL_FALSE)
+        fail(line, tok.column, where + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
+      if (kind == 'u') fail(line, tok.column, where + " is an unsigned byte (0..255), not " + a.text);
+      a.bits = *v;
+      a.number = *v;
+      return a;
+    }
+    switch (kind) {
+      case 'e':
+        fail(line, tok.column, where + " is an enum: expected a GL_ name, got '" + a.text + "'");
+      case 'b': {
+        std::uint32_t bits = 0;
+        if (!isName) {
+          const auto n = parseInteger(tok.text);
+          if (!n || *n < 0 || *n > 0xFFFFFFFFLL)
+            fail(line, tok.column, where + " is a bitfield: GL names joined by '|', got '" + a.text + "'");
+          bits = static_cast<std::uint32_t>(*n);
+        } else {
+          size_t start = 0;
+          while (start <= tok.text.size()) {
+            const size_t bar = tok.text.find('|', start);
+            const std::string_view part = tok.text.substr(start, bar == std::string_view::npos ? std::string_view::npos : bar - start);
+            const auto v = glEnumValue(part);
+            if (!v)
+              fail(line, tok.column + static_cast<int>(start),
+                   "unknown GL enumerant '" + std::string(part) + "' in bitfield (" + where + ")");
+            bits |= *v;
+            if (bar == std::string_view::npos) break;
+            start = bar + 1;
+          }
+        }
+        a.bits = bits;
+        a.number = bits;
+        return a;
+      }
+      case 'i':
+      case 'u':
+      case 'z': {
+        const auto n = parseInteger(tok.text);
+        if (!n) fail(line, tok.column, where + " is an integer: expected a decimal or 0x literal, got '" + a.text + "'");
+        if (kind == 'u' && (*n < 0 || *n > 255))
+          fail(line, tok.column, where + " is an unsigned byte: " + a.text + " is outside 0..255");
+        if (kind == 'z' && *n != 0 && *n != 1)
+          fail(line, tok.column, where + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
+        if (*n < -2147483648LL || *n > 4294967295LL)
+          fail(line, tok.column, where + ": " + a.text + " does not fit in 32 bits");
+        a.bits = static_cast<std::uint32_t>(*n);
+        a.number = static_cast<double>(*n);
+        return a;
+      }
+      default: {  // f, m, v
+        const auto v = parseNumber(tok.text);
+        if (!v) fail(line, tok.column, where + " is a number: expected a C literal, got '" + a.text + "'");
+        a.number = *v;
+        return a;
+      }
+    }
+  }
+
+  Script parse(std::string_view text) {
+    Script script;
+    script.file = file_;
+    bool sawCall = false, sawFramebuffer = false, sawProfile = false;
+    std::set<std::string> snapshots;
+    int lineNo = 0;
+    size_t pos = 0;
+    while (pos <= text.size()) {
+      size_t eol = text.find('\n', pos);
+      if (eol == std::string_view::npos) eol = text.size();
+      std::string_view line = text.substr(pos, eol - pos);
+      pos = eol + 1;
+      ++lineNo;
+      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+      const std::vector<Token> toks = tokenize(line);
+      if (toks.empty()) {
+        if (eol == text.size()) break;
+        continue;
+      }
+      const Token& head = toks[0];
+      if (head.text[0] == '@') {
+        ScriptCommand cmd;
+        cmd.line = lineNo;
+        if (head.text == "@framebuffer") {
+          if (sawCall) fail(lineNo, head.column, "@framebuffer must come before the first call");
+          if (sawFramebuffer) fail(lineNo, head.column, "@framebuffer given twice");
+          if (toks.size() != 3) fail(lineNo, head.column, "@framebuffer takes a width and a height");
+          const auto w = parseInteger(toks[1].text), h = parseInteger(toks[2].text);
+          if (!w) fail(lineNo, toks[1].column, "framebuffer width must be an integer");
+          if (!h) fail(lineNo, toks[2].column, "framebuffer height must be an integer");
+          const std::string why = Framebuffer::checkSize(static_cast<int>(std::clamp<long long>(*w, -1, 1 << 30)),
+                                                         static_cast<int>(std::clamp<long long>(*h, -1, 1 << 30)));
+          if (!why.empty()) fail(lineNo, toks[1].column, why);
+          script.width = static_cast<int>(*w);
+          script.height = static_cast<int>(*h);
+          sawFramebuffer = true;
+          continue;
+        }
+        if (head.text == "@profile") {
+          if (sawCall) fail(lineNo, head.column, "@profile must come before the first call");
+          if (sawProfile) fail(lineNo, head.column, "@profile given twice");
+          if (toks.size() != 2) fail(lineNo, head.column, "@profile takes one profile name");
+          if (!findProfile(toks[1].text)) {
+            std::string names;
+            for (const auto& n : profileNames()) names += (names.empty() ? "" : ", ") + n;
+            fail(lineNo, toks[1].column, "unknown profile '" + std::string(toks[1].text) + "' (known: " + names + ")");
+          }
+          script.profile = std::string(toks[1].text);
+          sawProfile = true;
+          continue;
+        }
+        if (head.text == "@pass") {
+          if (toks.size() < 2) fail(lineNo, head.column, "@pass needs a label");
+          cmd.kind = ScriptCommand::Kind::Pass;
+          // The label is the rest of the line, comments excluded.
+          const size_t from = static_cast<size_t>(toks[1].column - 1);
+          const Token& last = toks.back();
+          cmd.label = std::string(line.substr(from, static_cast<size_t>(last.column - 1) + last.text.size() - from));
+          script.commands.push_back(std::move(cmd));
+          continue;
+        }
+        if (head.text == "@snapshot") {
+          if (toks.size() != 2) fail(lineNo, head.column, "@snapshot takes one name");
+          const std::string name(toks[1].text);
+          const bool ok = std::all_of(name.begin(), name.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+          }) && name[0] != '.';
+          if (!ok) fail(lineNo, toks[1].column, "snapshot name '" + name + "' may use letters, digits, '_', '-' and '.'");
+          if (!snapshots.insert(name).second) fail(lineNo, toks[1].column, "snapshot '" + name + "' is taken twice");
+          cmd.kind = ScriptCommand::Kind::Snapshot;
+          cmd.label = name;
+          script.commands.push_back(std::move(cmd));
+          continue;
+        }
+        fail(lineNo, head.column, "unknown directive '" + std::string(head.text) +
+                                      "' (known: @framebuffer, @profile, @pass, @snapshot)");
+      }
+
+      const CallSpec* spec = findCall(head.text);
+      if (!spec) {
+        const std::string near = closestCallName(head.text);
+        fail(lineNo, head.column, "'" + std::string(head.text) + "' is not a call of the GL script call set" +
+                                      (near.empty() ? "" : "; did you mean '" + near + "'?"));
+      }
+      sawCall = true;
+      ScriptCommand cmd;
+      cmd.line = lineNo;
+      cmd.call = spec->call;
+      const std::string_view kinds = spec->args;
+      const size_t given = toks.size() - 1;
+      const bool variadic = !kinds.empty() && kinds.back() == 'v';
+      const size_t fixed = variadic ? kinds.size() - 1 : kinds.size();
+      size_t expected = fixed;
+      for (char k : kinds) if (k == 'm') expected += 15;
+      const int endColumn = static_cast<int>(line.size()) + 1;
+      if (!variadic && given != expected) {
+        const int col = given > expected ? toks[expected + 1].column : endColumn;
+        fail(lineNo, col, std::string(spec->name) + " takes " + std::to_string(expected) + " argument" +
+                              (expected == 1 ? "" : "s") + ", got " + std::to_string(given));
+      }
+      if (variadic && given < fixed + 1)
+        fail(lineNo, endColumn, std::string(spec->name) + " takes " + std::to_string(fixed) +
+                                    " argument(s) and then its values, got " + std::to_string(given) + " argument(s)");
+      size_t t = 1;
+      for (size_t k = 0; k < kinds.size(); ++k) {
+        const char kind = kinds[k];
+        if (kind == 'm') {
+          for (int j = 0; j < 16; ++j, ++t) cmd.args.push_back(parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
+        } else if (kind == 'v') {
+          const int want = vectorCount(spec->call, cmd.args.back().bits);
+          const size_t have = toks.size() - t;
+          if (want > 0 && have != static_cast<size_t>(want))
+            fail(lineNo, have > static_cast<size_t>(want) ? toks[t + want].column : endColumn,
+                 std::string(spec->name) + " " + cmd.args.back().text + " takes " + std::to_string(want) +
+                     " value" + (want == 1 ? "" : "s") + ", got " + std::to_string(have));
+          if (want == 0 && have > 4) fail(lineNo, toks[t + 4].column, std::string(spec->name) + " takes at most 4 values");
+          for (; t < toks.size(); ++t) cmd.args.push_back(parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
+        } else {
+          cmd.args.push_back(parseArg(kind, toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
+          ++t;
+        }
+      }
+      checkSubset(*spec, cmd, lineNo);
+      script.commands.push_back(std::move(cmd));
+    }
+    return script;
+  }
+
+  // GL-valid arguments the Iris subset does not emulate are outside the call set.
+  void checkSubset(const CallSpec& spec, const ScriptCommand& cmd, int line) const {
+    auto outside = [&](const ScriptArg& a, const std::string& what) {
+      fail(line, a.column, a.text + " is valid GL but outside the emulated call set (" + what + ")");
+    };
+    switch (spec.call) {
+      case GLCall::Enable:
+      case GLCall::Disable:
+        if (unsupportedCapabilities().count(cmd.args[0].bits)) outside(cmd.args[0], "see spec/gl-script.md for the capabilities");
+        break;
+      case GLCall::Begin:
+        switch (cmd.args[0].bits) {
+          case GL_POINTS: case GL_LINES: case GL_LINE_STRIP: case GL_LINE_LOOP:
+            outside(cmd.args[0], "only polygon primitives are emulated");
+        }
+        break;
+      case GLCall::MatrixMode:
+        if (cmd.args[0].bits == GL_TEXTURE) outside(cmd.args[0], "no texturing");
+        break;
+      case GLCall::LightModeli:
+      case GLCall::LightModelf:
+        if (cmd.args[0].bits == GL_LIGHT_MODEL_COLOR_CONTROL) outside(cmd.args[0], "no separate specular colour");
+        break;
+      default: break;
+    }
+  }
+
+ private:
+  std::string file_;
+};
+
+}  // namespace
+
+std::string_view glCallName(GLCall c) {
+  for (const CallSpec& s : kCalls)
+    if (s.call == c) return s.name;
+  return "?";
+}
+
+std::size_t Script::callCount() const {
+  return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) {
+    return c.kind == ScriptCommand::Kind::Call;
+  }));
+}
+
+Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }
+
+Script loadScript(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScriptError(path, 0, 0, "cannot read the script: " + std::string(std::strerror(errno)));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parseScript(ss.str(), path);
+}
+
+}  // namespace mpr

@@ -1,0 +1,74 @@
+#pragma once
+// The GL script format (spec/gl-script.md): parsing into a checked list of
+// commands. Parsing is complete before anything runs, so a script error stops
+// the run before a single buffer is touched or a file written.
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mpr {
+
+// A user error in a script: FILE:LINE:COLUMN: message.
+class ScriptError : public std::runtime_error {
+ public:
+  ScriptError(std::string file, int line, int column, const std::string& message)
+      : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message),
+        file_(std::move(file)), line_(line), column_(column) {}
+  int line() const { return line_; }
+  int column() const { return column_; }
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+  int line_, column_;
+};
+
+// The calls of the spec's call set.
+enum class GLCall : std::uint8_t {
+  Viewport, Scissor, ClearColor, ClearDepth, ClearStencil, ClearAccum, Clear, ColorMask, DepthMask,
+  StencilMask, Finish, Flush,
+  Enable, Disable, StencilFunc, StencilOp, DepthFunc, DepthRange, BlendFunc, AlphaFunc, CullFace,
+  FrontFace, ShadeModel, Fogf, Fogi, Fogfv, Hint,
+  MatrixMode, LoadIdentity, LoadMatrixf, LoadMatrixd, MultMatrixf, MultMatrixd, PushMatrix, PopMatrix,
+  Translatef, Translated, Rotatef, Rotated, Scalef, Scaled, Frustum, Ortho, Perspective, LookAt, ClipPlane,
+  Lightf, Lightfv, LightModelf, LightModelfv, LightModeli, Materialf, Materialfv, ColorMaterial,
+  Color3f, Color4f, Color3ub, Color4ub, Normal3f,
+  Begin, End, Vertex2f, Vertex3f, Vertex4f, Rectf,
+  Accum,
+};
+
+// The C name of a call ("glStencilFunc").
+std::string_view glCallName(GLCall c);
+
+struct ScriptArg {
+  double number = 0.0;       // the value as a number (enums: their value)
+  std::uint32_t bits = 0;    // integer and enum arguments as GL's 32-bit word
+  int column = 0;
+  std::string text;          // as written
+};
+
+struct ScriptCommand {
+  enum class Kind : std::uint8_t { Call, Pass, Snapshot } kind = Kind::Call;
+  int line = 0;
+  GLCall call = GLCall::Finish;
+  std::vector<ScriptArg> args;
+  std::string label;  // pass label or snapshot name
+};
+
+struct Script {
+  std::string file;
+  int width = 256, height = 256;  // @framebuffer; 256x256 when absent
+  std::optional<std::string> profile;
+  std::vector<ScriptCommand> commands;
+  std::size_t callCount() const;
+};
+
+// Parses `text`; `file` names it in error messages. Throws ScriptError.
+Script parseScript(std::string_view text, const std::string& file);
+// Reads and parses a file; an unreadable file is a ScriptError at 0:0.
+Script loadScript(const std::string& path);
+
+}  // namespace mpr

@@ -1,0 +1,25 @@
+#pragma once
+// Executes a parsed GL script on a GLContext, call by call, reporting GL
+// errors, pass boundaries and snapshot points to the caller.
+#include <cstdint>
+#include <functional>
+
+#include "pipeline/gl_context.hpp"
+#include "pipeline/gl_script.hpp"
+
+namespace mpr {
+
+struct ScriptHooks {
+  std::function<void(const ScriptCommand& pass)> onPass;
+  std::function<void(const ScriptCommand& snapshot, const GLContext&)> onSnapshot;
+  // A call GL rejected: the call had no effect and `error` is what glGetError returns.
+  std::function<void(const ScriptCommand& call, std::uint32_t error)> onGLError;
+};
+
+// One call on the context (no error reporting).
+void executeCall(GLContext& gl, const ScriptCommand& call);
+
+// Runs every command; returns the number of GL errors raised.
+std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& hooks = {});
+
+}  // namespace mpr

@@ -1,0 +1,59 @@
+#include "pipeline/lighting.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mpr {
+namespace {
+
+float dot3(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+Vec3 normalized(const Vec3& v) {
+  const float len = std::sqrt(dot3(v, v));
+  return len > 0.0f ? v / len : v;
+}
+
+}  // namespace
+
+Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, bool back) {
+  const Material& m = s.material[back ? 1 : 0];
+  const Vec3 n = back ? -normalIn : normalIn;
+  const Vec3 v = eye.w != 0.0f ? Vec3(eye) / eye.w : Vec3(eye);
+
+  // GL 1.1 equation (2.5): emission + scene ambient + the sum over lights.
+  Vec3 c = Vec3(m.emission) + Vec3(m.ambient) * Vec3(s.model.ambient);
+  for (const LightSource& l : s.lights) {
+    if (!l.enabled) continue;
+    Vec3 toLight;
+    float attenuation = 1.0f;
+    if (l.position.w != 0.0f) {
+      toLight = Vec3(l.position) / l.position.w - v;
+      const float d = std::sqrt(dot3(toLight, toLight));
+      attenuation = 1.0f / (l.constantAttenuation + l.linearAttenuation * d + l.quadraticAttenuation * d * d);
+      toLight = d > 0.0f ? toLight / d : toLight;
+    } else {
+      toLight = normalized(Vec3(l.position));
+    }
+    float spot = 1.0f;
+    if (l.spotCutoff != 180.0f) {
+      const float cosAngle = dot3(-toLight, normalized(l.spotDirection));
+      const float cosCutoff = static_cast<float>(std::cos(l.spotCutoff * 3.14159265358979323846 / 180.0));
+      spot = cosAngle >= cosCutoff ? std::pow(std::max(cosAngle, 0.0f), l.spotExponent) : 0.0f;
+    }
+    const float scale = attenuation * spot;
+    if (scale == 0.0f) continue;
+    Vec3 term = Vec3(m.ambient) * Vec3(l.ambient);
+    const float nDotL = dot3(n, toLight);
+    if (nDotL > 0.0f) {
+      term += nDotL * Vec3(m.diffuse) * Vec3(l.diffuse);
+      const Vec3 toEye = s.model.localViewer ? normalized(-v) : Vec3(0.0f, 0.0f, 1.0f);
+      const float nDotH = dot3(n, normalized(toLight + toEye));
+      if (nDotH > 0.0f) term += std::pow(nDotH, m.shininess) * Vec3(m.specular) * Vec3(l.specular);
+    }
+    c += scale * term;
+  }
+  const Vec3 rgb = glm::clamp(c, Vec3(0.0f), Vec3(1.0f));
+  return Vec4(rgb, std::clamp(m.diffuse.a, 0.0f, 1.0f));
+}
+
+}  // namespace mpr

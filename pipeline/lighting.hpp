@@ -1,0 +1,55 @@
+#pragma once
+// GL 1.x fixed-function lighting (GL 1.1 section 2.13), evaluated in eye
+// space per vertex: 8 lights with ambient, diffuse and specular terms,
+// shininess, local or infinite viewer, distance attenuation, spot lights, and
+// the colour-material tracking of the current colour.
+#include <array>
+
+#include "pipeline/vecmath.hpp"
+
+namespace mpr {
+
+inline constexpr int kMaxLights = 8;
+
+struct LightSource {
+  bool enabled = false;
+  Vec4 ambient{0, 0, 0, 1};
+  Vec4 diffuse{0, 0, 0, 1};   // GL_LIGHT0 defaults to (1,1,1,1), set by the context
+  Vec4 specular{0, 0, 0, 1};  // likewise
+  Vec4 position{0, 0, 1, 0};  // eye space (transformed by the modelview when specified)
+  Vec3 spotDirection{0, 0, -1};  // eye space
+  float spotExponent = 0.0f;
+  float spotCutoff = 180.0f;
+  float constantAttenuation = 1.0f;
+  float linearAttenuation = 0.0f;
+  float quadraticAttenuation = 0.0f;
+};
+
+struct Material {
+  Vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f};
+  Vec4 diffuse{0.8f, 0.8f, 0.8f, 1.0f};
+  Vec4 specular{0, 0, 0, 1};
+  Vec4 emission{0, 0, 0, 1};
+  float shininess = 0.0f;
+};
+
+struct LightModel {
+  Vec4 ambient{0.2f, 0.2f, 0.2f, 1.0f};
+  bool localViewer = false;
+  bool twoSide = false;
+};
+
+struct LightingState {
+  std::array<LightSource, kMaxLights> lights;
+  LightModel model;
+  std::array<Material, 2> material;  // [0] front, [1] back
+};
+
+// The lit colour of a vertex at eye position `eye` with unit or non-unit eye
+// normal `normal` (used as given: GL_NORMALIZE is the caller's business), for
+// the front material (back = false) or the back material with the normal
+// negated (back = true). RGB is clamped to [0, 1]; alpha is the material's
+// diffuse alpha, clamped.
+Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normal, bool back);
+
+}  // namespace mpr

@@ -1,0 +1,110 @@
+#pragma once
+// Triangle coverage with exact integer edge functions and a top-left fill
+// rule, so that triangles sharing an edge never both cover a pixel and a fan
+// around a point covers each pixel exactly once. The rasterizer knows nothing
+// of GL state: it reports covered pixels and their screen-space barycentric
+// weights; the caller interpolates what it needs.
+//
+// Work is bounded by a clip rectangle, so a caller may split the window into
+// tiles and run them on separate threads: coverage of a pixel depends only on
+// the triangle, never on the tile it falls in.
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <utility>
+
+#include "raster/fixed_point.hpp"
+
+namespace mpr {
+
+struct PixelBounds {  // half-open [x0, x1) x [y0, y1)
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// Window position of one vertex, already snapped.
+struct SnappedVertex {
+  std::int64_t x = 0, y = 0;
+};
+
+inline SnappedVertex snapVertex(float x, float y) { return {snapToSubpixel(x), snapToSubpixel(y)}; }
+
+// Twice the signed area in fixed point: positive when counter-clockwise in
+// GL window coordinates (y up).
+inline std::int64_t signedArea2(const SnappedVertex& a, const SnappedVertex& b, const SnappedVertex& c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Which ties (pixel centre exactly on an edge) belong to the triangle: the
+// top-left rule of a y-down framebuffer (D3D, Gallium), as Mesa's llvmpipe
+// applies it to OSMesa's buffers. In GL window coordinates (y up) that is:
+// centres on a left edge and on a horizontal bottom edge belong to the
+// triangle; those on a right or a horizontal top edge do not. (Measured
+// against llvmpipe; softpipe differs on such centres.)
+inline bool ownsTies(std::int64_t dx, std::int64_t dy) {
+  // Counter-clockwise in y-up coordinates: the interior lies left of each
+  // edge, left edges run downwards and the bottom edge runs left to right.
+  return dy < 0 || (dy == 0 && dx > 0);
+}
+
+// Calls emit(x, y, w0, w1, w2) for every covered pixel inside `clip`, where wi
+// are the (integer) edge-function weights of vertex i; their sum is the doubled
+// area. Degenerate triangles cover nothing.
+template <typename Emit>
+void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBounds& clip, Emit&& emit) {
+  std::array<SnappedVertex, 3> v = vIn;
+  std::int64_t area = signedArea2(v[0], v[1], v[2]);
+  if (area == 0) return;
+  // Normalise to counter-clockwise; remember the swap to report weights in the
+  // caller's vertex order.
+  const bool swapped = area < 0;
+  if (swapped) {
+    std::swap(v[1], v[2]);
+    area = -area;
+  }
+
+  std::int64_t minX = std::min({v[0].x, v[1].x, v[2].x}), maxX = std::max({v[0].x, v[1].x, v[2].x});
+  std::int64_t minY = std::min({v[0].y, v[1].y, v[2].y}), maxY = std::max({v[0].y, v[1].y, v[2].y});
+  const std::int64_t px0 = std::max<std::int64_t>(clip.x0, ceilDivSubpixel(minX));
+  const std::int64_t px1 = std::min<std::int64_t>(clip.x1 - 1, floorDivSubpixel(maxX));
+  const std::int64_t py0 = std::max<std::int64_t>(clip.y0, ceilDivSubpixel(minY));
+  const std::int64_t py1 = std::min<std::int64_t>(clip.y1 - 1, floorDivSubpixel(maxY));
+  if (px0 > px1 || py0 > py1) return;
+
+  // Edge i is opposite vertex i: E_i(p) = cross(v[j] - v[k], p - v[k])... written
+  // so that E_i at vertex i equals the doubled area, making E_i the weight of i.
+  struct Edge {
+    std::int64_t stepX, stepY, rowStart;
+    std::int64_t bias;  // 0 for edges that own ties, 1 otherwise (test is E - bias >= 0)
+  };
+  std::array<Edge, 3> e{};
+  for (int i = 0; i < 3; ++i) {
+    const SnappedVertex& a = v[(i + 1) % 3];
+    const SnappedVertex& b = v[(i + 2) % 3];
+    const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+    // E(p) = dx * (p.y - a.y) - dy * (p.x - a.x): positive left of a->b.
+    e[i].stepX = -dy * kSubpixelOne;
+    e[i].stepY = dx * kSubpixelOne;
+    e[i].rowStart = dx * (py0 * kSubpixelOne - a.y) - dy * (px0 * kSubpixelOne - a.x);
+    e[i].bias = ownsTies(dx, dy) ? 0 : 1;
+  }
+
+  for (std::int64_t py = py0; py <= py1; ++py) {
+    std::int64_t w0 = e[0].rowStart, w1 = e[1].rowStart, w2 = e[2].rowStart;
+    for (std::int64_t px = px0; px <= px1; ++px) {
+      if (((w0 - e[0].bias) | (w1 - e[1].bias) | (w2 - e[2].bias)) >= 0) {
+        if (swapped)
+          emit(static_cast<int>(px), static_cast<int>(py), w0, w2, w1);
+        else
+          emit(static_cast<int>(px), static_cast<int>(py), w0, w1, w2);
+      }
+      w0 += e[0].stepX;
+      w1 += e[1].stepX;
+      w2 += e[2].stepX;
+    }
+    e[0].rowStart += e[0].stepY;
+    e[1].rowStart += e[1].stepY;
+    e[2].rowStart += e[2].stepY;
+  }
+}
+
+}  // namespace mpr
