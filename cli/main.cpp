@@ -2,6 +2,7 @@
 // calls the libraries.
 #include <CLI/CLI.hpp>
 
+#include "cli/conform_command.hpp"
 #include "cli/gl_command.hpp"
 
 int main(int argc, char** argv) {
@@ -11,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exitCode = 0;
   mpr::cli::addGlCommand(app, exitCode);
+  mpr::cli::addConformCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
