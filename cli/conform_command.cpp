@@ -1,14 +1,18 @@
 #include "cli/conform_command.hpp"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
 #include "conformance/buffer_comparison.hpp"
 #include "conformance/mesa_replayer.hpp"
 #include "conformance/mpr_replay.hpp"
+#include "conformance/random_script.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
 
@@ -16,9 +20,20 @@ namespace mpr::cli {
 namespace {
 
 struct ConformOptions {
-  std::string script;
+  std::vector<std::string> scripts;
   std::string driver = "llvmpipe";
   std::string reportDir;
+  int random = 0;               // number of random scripts
+  std::uint64_t seed = 1;       // first seed
+  bool quiet = false;           // only the summary table
+};
+
+// Totals over many scripts, per buffer: the agreement table.
+struct Totals {
+  std::size_t scripts = 0, conforming = 0;
+  std::map<std::string, std::size_t> pixels, identical;
+  std::map<std::string, int> maxDiff;
+  std::vector<std::string> failures;
 };
 
 std::string percent(std::size_t a, std::size_t n) {
@@ -53,18 +68,8 @@ std::string differencePng(const BufferSet& m, const BufferAgreement& b, const Bu
   return path;
 }
 
-int runConform(const ConformOptions& o) {
-  Script script;
-  try {
-    script = loadScript(o.script);
-  } catch (const ScriptError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  }
-  if (o.driver != "llvmpipe" && o.driver != "softpipe") {
-    std::cerr << "mpr conform: --driver must be llvmpipe or softpipe\n";
-    return 2;
-  }
+// Compares one script; prints its report unless quiet. 0 conforms, 1 not, 2 no Mesa.
+int conformScript(const Script& script, const ConformOptions& o, const std::string& reportDir, Totals& totals) {
   MesaReplay mesa;
   try {
     mesa = replayOnMesa(script, o.driver);
@@ -74,12 +79,12 @@ int runConform(const ConformOptions& o) {
   }
   const MprReplay ours = replayOnMpr(script, mesaProfile());
   const ConformanceBounds bounds = boundsFor(script);
-
-  std::cout << script.file << " on " << mesa.renderer << "\n"
+  std::ostringstream out;
+  out << script.file << " on " << mesa.renderer << "\n"
             << "bounds: stencil " << (bounds.exactCoordinates ? "identical (exact coordinates)" : "identical on 99.9%")
             << ", depth within " << bounds.depthBound() << ", colour within " << bounds.colorBound()
             << (bounds.litOrFogged ? " (lighting or fog)" : "") << "\n";
-  std::cout << std::left << std::setw(16) << "point" << std::setw(9) << "buffer" << std::setw(26) << "identical"
+  out << std::left << std::setw(16) << "point" << std::setw(9) << "buffer" << std::setw(26) << "identical"
             << std::setw(10) << "max diff" << "verdict\n";
   bool all = true;
   std::ostringstream json, mismatchText;
@@ -91,7 +96,10 @@ int runConform(const ConformOptions& o) {
     json << "    {\"point\": \"" << p.point << "\", \"conforms\": " << (p.conforms() ? "true" : "false") << ", \"buffers\": [";
     bool firstBuffer = true;
     for (const BufferAgreement* b : {&p.stencil, &p.depth, &p.color}) {
-      std::cout << std::setw(16) << p.point << std::setw(9) << b->buffer << std::setw(26)
+      totals.pixels[b->buffer] += b->pixels;
+      totals.identical[b->buffer] += b->agree;
+      totals.maxDiff[b->buffer] = std::max(totals.maxDiff[b->buffer], b->maxDiff);
+      out << std::setw(16) << p.point << std::setw(9) << b->buffer << std::setw(26)
                 << (std::to_string(b->agree) + "/" + std::to_string(b->pixels) + " (" + percent(b->agree, b->pixels) + ")")
                 << std::setw(10) << b->maxDiff << (b->conforms() ? "ok" : "OUT OF BOUNDS") << "\n";
       json << (firstBuffer ? "" : ", ") << "{\"buffer\": \"" << b->buffer << "\", \"pixels\": " << b->pixels
@@ -101,28 +109,81 @@ int runConform(const ConformOptions& o) {
       for (const PixelMismatch& mm : b->first)
         mismatchText << "  " << p.point << " " << b->buffer << " (" << mm.x << "," << mm.y << "): mpr "
                      << values(b->buffer, mm.mpr) << ", mesa " << values(b->buffer, mm.mesa) << "\n";
-      if (!o.reportDir.empty() && b->agree != b->pixels) {
-        std::filesystem::create_directories(o.reportDir);
+      if (!reportDir.empty() && b->agree != b->pixels) {
+        std::filesystem::create_directories(reportDir);
         differencePng(ours.snapshots[k], *b, mesa.snapshots[k],
-                      (std::filesystem::path(o.reportDir) / (p.point + "-" + b->buffer + "-diff.png")).string());
+                      (std::filesystem::path(reportDir) / (p.point + "-" + b->buffer + "-diff.png")).string());
       }
     }
     json << "]}" << (k + 1 < ours.snapshots.size() ? "," : "") << "\n";
   }
-  if (!mismatchText.str().empty()) std::cout << "first mismatches:\n" << mismatchText.str();
+  if (!mismatchText.str().empty()) out << "first mismatches:\n" << mismatchText.str();
   if (ours.glErrors != mesa.glErrors) {
-    std::cout << "GL errors differ:\n";
-    for (const auto& e : ours.glErrors) std::cout << "  mpr  " << e << "\n";
-    for (const auto& e : mesa.glErrors) std::cout << "  mesa " << e << "\n";
+    all = false;
+    out << "GL errors differ:\n";
+    for (const auto& e : ours.glErrors) out << "  mpr  " << e << "\n";
+    for (const auto& e : mesa.glErrors) out << "  mesa " << e << "\n";
   }
   json << "  ],\n  \"gl_errors_agree\": " << (ours.glErrors == mesa.glErrors ? "true" : "false")
        << ",\n  \"conforms\": " << (all ? "true" : "false") << "\n}\n";
-  if (!o.reportDir.empty()) {
-    std::filesystem::create_directories(o.reportDir);
-    writeFileAtomically((std::filesystem::path(o.reportDir) / "summary.json").string(), json.str());
+  if (!reportDir.empty()) {
+    std::filesystem::create_directories(reportDir);
+    writeFileAtomically((std::filesystem::path(reportDir) / "summary.json").string(), json.str());
+    if (!all) writeFileAtomically((std::filesystem::path(reportDir) / "script.gls").string(), script.text);
   }
-  std::cout << (all ? "conforms" : "does NOT conform") << "\n";
+  out << (all ? "conforms" : "does NOT conform") << "\n";
+  ++totals.scripts;
+  if (all) ++totals.conforming;
+  else totals.failures.push_back(script.file);
+  if (!o.quiet || !all) std::cout << out.str();
   return all ? 0 : 1;
+}
+
+int runConform(const ConformOptions& o) {
+  if (o.driver != "llvmpipe" && o.driver != "softpipe") {
+    std::cerr << "mpr conform: --driver must be llvmpipe or softpipe\n";
+    return 2;
+  }
+  if (o.scripts.empty() && o.random == 0) {
+    std::cerr << "mpr conform: give one or more scripts, or --random N\n";
+    return 2;
+  }
+  // Parse everything first: a bad script stops the run before anything is compared.
+  std::vector<Script> scripts;
+  try {
+    for (const std::string& path : o.scripts) scripts.push_back(loadScript(path));
+    for (int i = 0; i < o.random; ++i) {
+      const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(i);
+      scripts.push_back(parseScript(randomConformanceScript(seed), "random-seed-" + std::to_string(seed) + ".gls"));
+    }
+  } catch (const ScriptError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  Totals totals;
+  int worst = 0;
+  for (std::size_t i = 0; i < scripts.size(); ++i) {
+    if (scripts.size() > 1 && isatty(2)) std::cerr << "\r[" << i + 1 << "/" << scripts.size() << "] " << std::flush;
+    std::string dir = o.reportDir;
+    if (!dir.empty() && scripts.size() > 1)
+      dir = (std::filesystem::path(dir) / std::filesystem::path(scripts[i].file).stem()).string();
+    const int rc = conformScript(scripts[i], o, dir, totals);
+    if (rc == 2) return 2;
+    worst = std::max(worst, rc);
+  }
+  if (scripts.size() > 1) {
+    if (isatty(2)) std::cerr << "\r";
+    std::cout << "\nagreement over " << totals.scripts << " scripts on " << o.driver << " (" << totals.conforming
+              << " within bounds)\n"
+              << std::left << std::setw(9) << "buffer" << std::setw(28) << "identical pixels" << "max diff\n";
+    for (const std::string b : {"stencil", "depth", "color"})
+      std::cout << std::setw(9) << b << std::setw(28)
+                << (std::to_string(totals.identical[b]) + "/" + std::to_string(totals.pixels[b]) + " (" +
+                    percent(totals.identical[b], totals.pixels[b]) + ")")
+                << totals.maxDiff[b] << "\n";
+    for (const std::string& f : totals.failures) std::cout << "out of bounds: " << f << "\n";
+  }
+  return worst;
 }
 
 }  // namespace
@@ -135,9 +196,13 @@ void addConformCommand(CLI::App& app, int& exitCode) {
       "Every @snapshot and the final buffers are compared: per buffer the identical pixels, the\n"
       "largest difference and the verdict against the bounds in the README. Exit status 0 when\n"
       "the script conforms, 1 when it does not, 2 for a bad script or no Mesa.");
-  c->add_option("script", opts->script, "GL script to run")->required();
+  c->add_option("scripts", opts->scripts, "GL scripts to run");
+  c->add_option("--random", opts->random, "also run N random scripts (seeded, dyadic coordinates)");
+  c->add_option("--seed", opts->seed, "first seed of --random (default 1)");
+  c->add_flag("-q,--quiet", opts->quiet, "print only scripts out of bounds and the table");
   c->add_option("--driver", opts->driver, "Mesa driver: llvmpipe (default) or softpipe");
-  c->add_option("--report", opts->reportDir, "write summary.json and difference images here");
+  c->add_option("--report", opts->reportDir,
+                 "write summary.json and difference images here (one folder per script when several)");
   c->callback([opts, &exitCode] { exitCode = runConform(*opts); });
 }
 

@@ -1,8 +1,10 @@
 #pragma once
-// Homogeneous polygon clipping (GL 1.1 section 2.11): against the near and
-// far planes, the user clip planes, and a guard band in x and y far outside
-// the window (as llvmpipe does), so that coverage inside the viewport is
-// decided by the rasterizer on the original edges, not on clipped ones.
+// Homogeneous polygon clipping (GL 1.1 section 2.11): against the six planes
+// of the view volume and the user clip planes. Like Mesa's draw module in
+// front of llvmpipe, x and y are clipped at the viewport itself (no guard
+// band): a vertex outside the viewport is replaced by one on its border, which
+// is then snapped, and that decides ties on the edges it creates (measured:
+// a guard band changes coverage of centres lying exactly on such edges).
 #include <array>
 #include <vector>
 
@@ -20,16 +22,15 @@ struct ClipVertex {
 // A plane a x + b y + c z + d w >= 0 in clip coordinates.
 using ClipPlane = Vec4;
 
-// Guard band half-width in NDC units: window coordinates stay within a few
-// times the largest window side, so fixed-point products fit in 64 bits.
-inline constexpr float kGuardBand = 8.0f;
+// Half-width of the x/y clip volume in NDC units: 1, the viewport itself.
+inline constexpr float kGuardBand = 1.0f;
 
 // Clips the convex polygon `poly` against every plane; the result may be empty.
 // Intersections are always computed from the inside vertex towards the outside
 // one, so the two triangles of a shared edge get the very same new vertex.
 std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> poly, const std::vector<ClipPlane>& planes);
 
-// The fixed planes: near, far, and the x/y guard band.
+// The fixed planes: near, far, left, right, bottom, top.
 const std::vector<ClipPlane>& viewVolumePlanes();
 
 }  // namespace mpr

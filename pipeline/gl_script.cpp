@@ -303,6 +303,7 @@ class Parser {
   Script parse(std::string_view text) {
     Script script;
     script.file = file_;
+    script.text = std::string(text);
     bool sawCall = false, sawFramebuffer = false, sawProfile = false;
     std::set<std::string> snapshots;
     int lineNo = 0;

@@ -60,6 +60,7 @@ struct ScriptCommand {
 
 struct Script {
   std::string file;
+  std::string text;  // the source, for reports that reproduce a run
   int width = 256, height = 256;  // @framebuffer; 256x256 when absent
   std::optional<std::string> profile;
   std::vector<ScriptCommand> commands;
