@@ -39,7 +39,7 @@ std::optional<StencilOp> stencilOpFromGL(GLenumValue op) {
   return std::nullopt;
 }
 
-std::optional<BlendFactor> blendFactorFromGL(GLenumValue f, bool source) {
+std::optional<BlendFactor> blendFactorFromGL(GLenumValue f) {
   switch (f) {
     case GL_ZERO: return BlendFactor::Zero;
     case GL_ONE: return BlendFactor::One;
@@ -52,9 +52,10 @@ std::optional<BlendFactor> blendFactorFromGL(GLenumValue f, bool source) {
     case GL_DST_ALPHA: return BlendFactor::DstAlpha;
     case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::OneMinusDstAlpha;
     case GL_SRC_ALPHA_SATURATE:
-      // GL 1.x accepts SRC_ALPHA_SATURATE as a source factor only.
-      if (source) return BlendFactor::SrcAlphaSaturate;
-      return std::nullopt;
+      // GL 1.1 takes it as a source factor only; Mesa's compatibility
+      // context (GL 3.3 and later rules) takes it for the destination too,
+      // and we follow the reference.
+      return BlendFactor::SrcAlphaSaturate;
   }
   return std::nullopt;
 }
@@ -271,7 +272,7 @@ void GLContext::depthRange(double n, double f) {
 
 void GLContext::blendFunc(GLenumValue src, GLenumValue dst) {
   if (!checkOutsideBeginEnd()) return;
-  const auto s = blendFactorFromGL(src, true), d = blendFactorFromGL(dst, false);
+  const auto s = blendFactorFromGL(src), d = blendFactorFromGL(dst);
   if (!s || !d) return setError(GL_INVALID_ENUM);
   frag_.blend.src = *s;
   frag_.blend.dst = *d;

@@ -22,8 +22,8 @@ std::vector<AssembledTriangle> assembleTriangles(PrimitiveType type, std::uint32
       break;
     case PrimitiveType::Quads:
       for (std::uint32_t i = 0; i + 3 < n; i += 4) {
-        out.push_back({{i, i + 1, i + 3}, i + 3});
-        out.push_back({{i + 1, i + 2, i + 3}, i + 3});
+        out.push_back({{i, i + 1, i + 2}, i + 3});
+        out.push_back({{i, i + 2, i + 3}, i + 3});
       }
       break;
     case PrimitiveType::QuadStrip:

@@ -2,9 +2,9 @@
 // Decomposition of GL's polygon primitives into triangles (GL 1.1 section
 // 2.6.1), with the provoking vertex whose colour flat shading uses (GL 1.1
 // Table 2.12: the last vertex of a triangle, the last of a quad, the first of a
-// polygon). Quad diagonals follow Mesa's draw module so that smooth colours
-// interpolate identically: quads split (0,1,3)(1,2,3), quad-strip quads
-// (2,0,3)(0,1,3) relative to their first vertex, polygons fan from vertex 0.
+// polygon). Diagonals follow Mesa (measured on llvmpipe with smooth colours):
+// quads split (0,1,2)(0,2,3), quad-strip quads (2,0,3)(0,1,3) relative to
+// their first vertex, polygons fan from vertex 0.
 #include <array>
 #include <cstdint>
 #include <vector>
