@@ -69,7 +69,10 @@ std::string differencePng(const BufferSet& m, const BufferAgreement& b, const Bu
 }
 
 // Compares one script; prints its report unless quiet. 0 conforms, 1 not, 2 no Mesa.
-int conformScript(const Script& script, const ConformOptions& o, const std::string& reportDir, Totals& totals) {
+// With several scripts a report is written only for those out of bounds.
+int conformScript(const Script& script, const ConformOptions& o, const std::string& reportDir, bool reportFailuresOnly,
+                  Totals& totals) {
+  std::vector<std::pair<std::size_t, BufferAgreement>> differing;  // difference images to write
   MesaReplay mesa;
   try {
     mesa = replayOnMesa(script, o.driver);
@@ -109,11 +112,7 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
       for (const PixelMismatch& mm : b->first)
         mismatchText << "  " << p.point << " " << b->buffer << " (" << mm.x << "," << mm.y << "): mpr "
                      << values(b->buffer, mm.mpr) << ", mesa " << values(b->buffer, mm.mesa) << "\n";
-      if (!reportDir.empty() && b->agree != b->pixels) {
-        std::filesystem::create_directories(reportDir);
-        differencePng(ours.snapshots[k], *b, mesa.snapshots[k],
-                      (std::filesystem::path(reportDir) / (p.point + "-" + b->buffer + "-diff.png")).string());
-      }
+      if (b->agree != b->pixels) differing.emplace_back(k, *b);
     }
     json << "]}" << (k + 1 < ours.snapshots.size() ? "," : "") << "\n";
   }
@@ -126,8 +125,11 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
   }
   json << "  ],\n  \"gl_errors_agree\": " << (ours.glErrors == mesa.glErrors ? "true" : "false")
        << ",\n  \"conforms\": " << (all ? "true" : "false") << "\n}\n";
-  if (!reportDir.empty()) {
+  if (!reportDir.empty() && (!all || !reportFailuresOnly)) {
     std::filesystem::create_directories(reportDir);
+    for (const auto& [k, b] : differing)
+      differencePng(ours.snapshots[k], b, mesa.snapshots[k],
+                    (std::filesystem::path(reportDir) / (ours.snapshots[k].point + "-" + b.buffer + "-diff.png")).string());
     writeFileAtomically((std::filesystem::path(reportDir) / "summary.json").string(), json.str());
     if (!all) writeFileAtomically((std::filesystem::path(reportDir) / "script.gls").string(), script.text);
   }
@@ -167,7 +169,7 @@ int runConform(const ConformOptions& o) {
     std::string dir = o.reportDir;
     if (!dir.empty() && scripts.size() > 1)
       dir = (std::filesystem::path(dir) / std::filesystem::path(scripts[i].file).stem()).string();
-    const int rc = conformScript(scripts[i], o, dir, totals);
+    const int rc = conformScript(scripts[i], o, dir, scripts.size() > 1, totals);
     if (rc == 2) return 2;
     worst = std::max(worst, rc);
   }
