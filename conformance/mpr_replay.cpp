@@ -2,7 +2,7 @@
 
 #include "pipeline/gl_context.hpp"
 #include "pipeline/gl_enums.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "pipeline/gl_script_runner.hpp"  // executeCall
 
 namespace mpr {
 namespace {
@@ -23,15 +23,21 @@ BufferSet collect(const std::string& point, const Framebuffer& fb) {
 MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile) {
   GLContext gl(script.width, script.height, profile);
   MprReplay out;
-  ScriptHooks hooks;
-  hooks.onSnapshot = [&](const ScriptCommand& c, const GLContext& ctx) {
-    out.snapshots.push_back(collect(c.label, ctx.framebuffer()));
-  };
-  hooks.onGLError = [&](const ScriptCommand& c, std::uint32_t e) {
-    out.glErrors.push_back(std::to_string(c.line) + ": " + std::string(glErrorName(e)) + " in " +
-                           std::string(glCallName(c.call)));
-  };
-  runScript(script, gl, hooks);
+  // Errors are read as the Mesa replayer reads them: after every call outside
+  // glBegin/glEnd (glGetError is itself an error inside), so an error raised
+  // between them is reported at glEnd, as GL keeps it.
+  bool inBegin = false;
+  for (const ScriptCommand& c : script.commands) {
+    if (c.kind == ScriptCommand::Kind::Snapshot) out.snapshots.push_back(collect(c.label, gl.framebuffer()));
+    if (c.kind != ScriptCommand::Kind::Call) continue;
+    executeCall(gl, c);
+    if (c.call == GLCall::Begin) inBegin = true;
+    if (c.call == GLCall::End) inBegin = false;
+    if (inBegin) continue;
+    if (const std::uint32_t e = gl.getError())
+      out.glErrors.push_back(std::to_string(c.line) + ": " + std::string(glErrorName(e)) + " in " +
+                             std::string(glCallName(c.call)));
+  }
   out.snapshots.push_back(collect("final", gl.framebuffer()));
   return out;
 }
