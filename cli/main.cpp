@@ -4,6 +4,7 @@
 
 #include "cli/conform_command.hpp"
 #include "cli/gl_command.hpp"
+#include "cli/render_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   int exitCode = 0;
   mpr::cli::addGlCommand(app, exitCode);
   mpr::cli::addConformCommand(app, exitCode);
+  mpr::cli::addRenderCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,124 @@
+#include "cli/render_command.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "algorithms/gl_command_stream.hpp"
+#include "algorithms/scene_renderer.hpp"
+#include "framebuffer/image_writer.hpp"
+#include "framebuffer/npy_writer.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace mpr::cli {
+namespace {
+
+struct RenderOptions {
+  std::string scene;
+  std::string output = "out/render.png";
+  int width = 0, height = 0;
+  std::vector<std::string> sets;
+  std::string dumpDir, traceFile, statsFile;
+  bool describe = false;
+};
+
+std::string statsJson(const GLCommandStream& s, const Scene& scene, double seconds) {
+  std::ostringstream o;
+  const PipelineCounters& c = const_cast<GLCommandStream&>(s).context().counters();
+  o << "{\n  \"scene\": \"" << scene.file << "\",\n  \"width\": " << scene.render.width << ",\n  \"height\": "
+    << scene.render.height << ",\n  \"seconds\": " << seconds << ",\n  \"gl_calls\": " << s.calls()
+    << ",\n  \"gl_errors\": " << s.glErrors() << ",\n  \"scene_triangles\": " << scene.triangleCount()
+    << ",\n  \"triangles\": " << c.triangles << ",\n  \"fragments_tested\": " << c.fragmentsTested
+    << ",\n  \"fragments_written\": " << c.fragmentsWritten << ",\n  \"passes\": {";
+  bool first = true;
+  for (const auto& [kind, p] : s.passStatistics()) {
+    o << (first ? "\n" : ",\n") << "    \"" << kind << "\": {\"count\": " << p.passes << ", \"gl_calls\": " << p.calls
+      << ", \"triangles\": " << p.triangles << ", \"fragments_tested\": " << p.fragmentsTested
+      << ", \"fragments_written\": " << p.fragmentsWritten << ", \"seconds\": " << p.seconds << "}";
+    first = false;
+  }
+  o << "\n  }\n}\n";
+  return o.str();
+}
+
+int runRender(const RenderOptions& o) {
+  if (o.describe) {
+    std::cout << describeSceneFormat();
+    return 0;
+  }
+  std::vector<std::string> sets = o.sets;
+  if (o.width > 0) sets.push_back("render.width=" + std::to_string(o.width));
+  if (o.height > 0) sets.push_back("render.height=" + std::to_string(o.height));
+  Scene scene;
+  try {
+    scene = o.scene.empty() ? loadSceneText(defaultSceneText(), "<default scene>", sets) : loadSceneFile(o.scene, sets);
+  } catch (const SceneError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  const std::string ext = std::filesystem::path(o.output).extension().string();
+  if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr") {
+    std::cerr << "mpr render: output '" << o.output << "' must end in .png, .tif, .tiff or .exr\n";
+    return 2;
+  }
+  std::unique_ptr<GLContext> gl;
+  try {
+    gl = std::make_unique<GLContext>(scene.render.width, scene.render.height, *findProfile(scene.render.profile));
+  } catch (const FramebufferSizeError& e) {
+    std::cerr << scene.file << ": " << e.what() << "\n";
+    return 2;
+  }
+  GLCommandStream stream(*gl, !o.traceFile.empty());
+  const bool tty = isatty(2);
+  const auto t0 = std::chrono::steady_clock::now();
+  renderScene(scene, stream, [&](const RenderProgress& p) {
+    if (tty) std::cerr << "\rrender: pass " << p.pass << "/" << p.passes << " (" << p.label << ")   " << std::flush;
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  try {
+    const std::filesystem::path out(o.output);
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    writeColorImage(gl->framebuffer(), o.output);
+    if (!o.dumpDir.empty()) {
+      std::filesystem::create_directories(o.dumpDir);
+      for (const NamedBytes& nb : framebufferNpyDumps(gl->framebuffer()))
+        writeFileAtomically((std::filesystem::path(o.dumpDir) / (nb.name + ".npy")).string(), nb.bytes);
+    }
+    if (!o.traceFile.empty()) writeFileAtomically(o.traceFile, stream.trace());
+    if (!o.statsFile.empty()) writeFileAtomically(o.statsFile, statsJson(stream, scene, seconds));
+  } catch (const std::exception& e) {
+    std::cerr << "mpr render: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << "rendered " << scene.file << " (" << scene.render.width << "x" << scene.render.height << ", "
+            << scene.triangleCount() << " triangles) to " << o.output << " in " << seconds << " s\n";
+  return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* c = app.add_subcommand("render", "Render a scene file (default: the embedded default scene)");
+  c->footer(
+      "The scene format is docs/scene-format.md (mpr render --describe-format prints its schema).\n"
+      "Scene errors print FILE:LINE:COLUMN, exit with status 2 and write nothing. The image is written\n"
+      "through OpenImageIO (PNG, TIFF or EXR by extension) to a temporary name and renamed into place.");
+  c->add_option("scene", o->scene, "scene file (YAML); none renders the default scene");
+  c->add_option("-o,--output", o->output, "output image (default out/render.png)");
+  c->add_option("--width", o->width, "image width (overrides render.width)");
+  c->add_option("--height", o->height, "image height (overrides render.height)");
+  c->add_option("--set", o->sets, "override a scene value: key.path=value (repeatable)");
+  c->add_option("--dump", o->dumpDir, "also write the final buffers as .npy files into this folder");
+  c->add_option("--trace", o->traceFile, "write the GL calls executed as a GL script (.gls)");
+  c->add_option("--stats", o->statsFile, "write statistics as JSON: passes by kind, calls, triangles, fragments, time");
+  c->add_flag("--describe-format", o->describe, "print a JSON Schema-like description of the scene format");
+  c->callback([o, &exitCode] { exitCode = runRender(*o); });
+}
+
+}  // namespace mpr::cli

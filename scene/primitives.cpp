@@ -1,0 +1,128 @@
+#include "scene/primitives.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mpr {
+namespace {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+// Adds a planar polygon with one normal for all its corners.
+void addFlatFace(Mesh& m, const std::vector<Vec3>& corners, const Vec3& normal) {
+  const auto base = static_cast<std::uint32_t>(m.positions.size());
+  std::vector<std::uint32_t> face;
+  for (const Vec3& c : corners) {
+    face.push_back(static_cast<std::uint32_t>(m.positions.size()));
+    m.positions.push_back(c);
+    m.normals.push_back(normal);
+  }
+  for (std::uint32_t i = 1; i + 1 < corners.size(); ++i) m.triangles.push_back({base, base + i, base + i + 1});
+  m.faces.push_back(std::move(face));
+}
+
+}  // namespace
+
+std::size_t Scene::triangleCount() const {
+  std::size_t n = 0;
+  for (const SceneObject& o : objects) n += o.mesh.triangles.size();
+  return n;
+}
+
+Mesh makeBox() {
+  Mesh m;
+  const float h = 0.5f;
+  addFlatFace(m, {{-h, -h, h}, {h, -h, h}, {h, h, h}, {-h, h, h}}, {0, 0, 1});
+  addFlatFace(m, {{h, -h, -h}, {-h, -h, -h}, {-h, h, -h}, {h, h, -h}}, {0, 0, -1});
+  addFlatFace(m, {{h, -h, h}, {h, -h, -h}, {h, h, -h}, {h, h, h}}, {1, 0, 0});
+  addFlatFace(m, {{-h, -h, -h}, {-h, -h, h}, {-h, h, h}, {-h, h, -h}}, {-1, 0, 0});
+  addFlatFace(m, {{-h, h, h}, {h, h, h}, {h, h, -h}, {-h, h, -h}}, {0, 1, 0});
+  addFlatFace(m, {{-h, -h, -h}, {h, -h, -h}, {h, -h, h}, {-h, -h, h}}, {0, -1, 0});
+  return m;
+}
+
+Mesh makeSphere(int slices, int stacks) {
+  Mesh m;
+  for (int j = 0; j <= stacks; ++j) {
+    const float v = static_cast<float>(j) / static_cast<float>(stacks);
+    const float phi = v * kPi;
+    for (int i = 0; i <= slices; ++i) {
+      const float theta = static_cast<float>(i) / static_cast<float>(slices) * 2.0f * kPi;
+      const Vec3 p(std::sin(phi) * std::cos(theta), std::cos(phi), -std::sin(phi) * std::sin(theta));
+      m.positions.push_back(p);
+      m.normals.push_back(p);
+    }
+  }
+  const auto row = static_cast<std::uint32_t>(slices + 1);
+  for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(stacks); ++j)
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(slices); ++i) {
+      const std::uint32_t a = j * row + i, b = a + row, c = b + 1, d = a + 1;
+      if (j != 0) m.triangles.push_back({a, b, d});
+      if (j + 1 != static_cast<std::uint32_t>(stacks)) m.triangles.push_back({d, b, c});
+    }
+  for (const auto& t : m.triangles) m.faces.push_back({t[0], t[1], t[2]});
+  return m;
+}
+
+Mesh makeCylinder(int slices) {
+  Mesh m;
+  for (int i = 0; i < slices; ++i) {
+    const float a0 = static_cast<float>(i) / static_cast<float>(slices) * 2.0f * kPi;
+    const float a1 = static_cast<float>(i + 1) / static_cast<float>(slices) * 2.0f * kPi;
+    const Vec3 p0(std::cos(a0), 0, -std::sin(a0)), p1(std::cos(a1), 0, -std::sin(a1));
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    for (const Vec3& p : {p0, p1}) {
+      m.positions.push_back(p + Vec3(0, -0.5f, 0));
+      m.normals.push_back(p);
+      m.positions.push_back(p + Vec3(0, 0.5f, 0));
+      m.normals.push_back(p);
+    }
+    // base: p0 bottom, p0 top, p1 bottom, p1 top
+    m.triangles.push_back({base, base + 2, base + 3});
+    m.triangles.push_back({base, base + 3, base + 1});
+    m.faces.push_back({base, base + 2, base + 3, base + 1});
+  }
+  std::vector<Vec3> top, bottom;
+  for (int i = 0; i < slices; ++i) {
+    const float a = static_cast<float>(i) / static_cast<float>(slices) * 2.0f * kPi;
+    top.emplace_back(std::cos(a), 0.5f, -std::sin(a));
+    bottom.insert(bottom.begin(), Vec3(std::cos(a), -0.5f, -std::sin(a)));
+  }
+  addFlatFace(m, top, {0, 1, 0});
+  addFlatFace(m, bottom, {0, -1, 0});
+  return m;
+}
+
+Mesh makeQuad() {
+  Mesh m;
+  addFlatFace(m, {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}}, {0, 0, 1});
+  return m;
+}
+
+Mesh makePlane(int divisions) {
+  Mesh m;
+  const float step = 1.0f / static_cast<float>(divisions);
+  for (int j = 0; j < divisions; ++j)
+    for (int i = 0; i < divisions; ++i) {
+      const float x0 = -0.5f + static_cast<float>(i) * step, z0 = 0.5f - static_cast<float>(j) * step;
+      addFlatFace(m, {{x0, 0, z0}, {x0 + step, 0, z0}, {x0 + step, 0, z0 - step}, {x0, 0, z0 - step}}, {0, 1, 0});
+    }
+  return m;
+}
+
+void transformMesh(Mesh& mesh, const Mat4& m) {
+  const glm::mat3 n = glm::transpose(glm::inverse(glm::mat3(m)));
+  for (Vec3& p : mesh.positions) p = Vec3(m * Vec4(p, 1.0f));
+  for (Vec3& v : mesh.normals) {
+    v = n * v;
+    const float len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    if (len > 0.0f) v /= len;
+  }
+  // A mirroring transform flips the winding.
+  if (glm::determinant(glm::mat3(m)) < 0.0f) {
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+    for (auto& f : mesh.faces) std::reverse(f.begin() + 1, f.end());
+  }
+}
+
+}  // namespace mpr

@@ -1,0 +1,85 @@
+#pragma once
+// The scene model: what a scene file describes, already validated and with
+// every mesh in world space. The renderer reads it; it knows nothing of YAML.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pipeline/vecmath.hpp"
+
+namespace mpr {
+
+struct Camera {
+  Vec3 position{0.0f, 1.6f, 6.0f};
+  Vec3 lookAt{0.0f, 1.0f, 0.0f};
+  Vec3 up{0.0f, 1.0f, 0.0f};
+  float fovY = 45.0f;  // degrees, vertical
+  float near = 0.1f;
+  float far = 100.0f;
+};
+
+struct PointLight {
+  Vec3 position{0.0f, 3.0f, 0.0f};
+  Vec3 color{1.0f, 1.0f, 1.0f};
+  Vec3 attenuation{1.0f, 0.0f, 0.0f};  // constant, linear, quadratic
+  float radius = 0.0f;                 // area light radius, for soft shadows
+};
+
+// The specular kinds the multi-pass effects use (1994 and 1997 papers).
+enum class MaterialKind : std::uint8_t { Diffuse, Mirror, Refractive, Translucent, Frosted };
+
+struct SceneMaterial {
+  std::string name;
+  MaterialKind kind = MaterialKind::Diffuse;
+  Vec3 diffuse{0.8f, 0.8f, 0.8f};
+  Vec3 specular{0.0f, 0.0f, 0.0f};
+  Vec3 emission{0.0f, 0.0f, 0.0f};
+  float shininess = 0.0f;       // Phong exponent (from `roughness` by the 1997 paper's eq. 6)
+  float reflectance = 1.0f;     // mirror
+  float ior = 1.5f;             // refractive, translucent, frosted
+  float transmittance = 0.9f;   // refractive, translucent, frosted
+  float fogDistance = 1.0f;     // translucent: distance of full fog
+  float shear = 0.05f;          // frosted: stochastic shear amount
+  int samples = 8;              // frosted: images accumulated
+  bool specularKind() const { return kind != MaterialKind::Diffuse; }
+};
+
+// Triangles for drawing, polygons (as given) for the planar-face checks the
+// specular effects need.
+struct Mesh {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;                           // per position
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::vector<std::uint32_t>> faces;       // the polygons the triangles came from
+};
+
+struct SceneObject {
+  std::string name;
+  Mesh mesh;          // world space
+  int material = 0;   // index into Scene::materials
+  int line = 0;       // where the object is defined, for messages
+};
+
+struct RenderSettings {
+  int width = 640, height = 480;
+  int recursionDepth = 2;        // mirror/refraction levels
+  int shadowRecursionDepth = 1;
+  int softShadowSamples = 1;
+  int antialiasSamples = 1;
+  bool shadows = true, reflections = true, refractions = true, translucency = true, frosted = true;
+  std::string profile = "indigo";
+};
+
+struct Scene {
+  std::string file;
+  Camera camera;
+  Vec3 ambient{0.1f, 0.1f, 0.1f};
+  std::vector<PointLight> lights;
+  std::vector<SceneMaterial> materials;
+  std::vector<SceneObject> objects;
+  RenderSettings render;
+  std::size_t triangleCount() const;
+};
+
+}  // namespace mpr

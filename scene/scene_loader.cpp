@@ -1,0 +1,467 @@
+#include "scene/scene_loader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "framebuffer/framebuffer.hpp"
+#include "framebuffer/profile.hpp"
+#include "pipeline/transforms.hpp"
+#include "scene/mesh_loader.hpp"
+#include "scene/primitives.hpp"
+
+namespace mpr {
+namespace {
+
+// The format, one table per section: the single source of truth for the
+// unknown-key check, the suggestions and --describe-format.
+struct KeySpec {
+  std::string_view key, type, meaning;
+};
+const std::vector<KeySpec> kTopKeys = {
+    {"camera", "mapping", "the viewer"},
+    {"ambient", "rgb", "scene ambient light, default [0.1, 0.1, 0.1]"},
+    {"lights", "sequence of light", "point lights"},
+    {"materials", "mapping name -> material", "named materials"},
+    {"objects", "sequence of object", "what is drawn"},
+    {"render", "mapping", "image size, recursion, effects, hardware profile"},
+};
+const std::vector<KeySpec> kCameraKeys = {
+    {"position", "vec3", "eye position"}, {"look_at", "vec3", "point looked at"},
+    {"up", "vec3", "up direction, default [0, 1, 0]"}, {"fov", "number (0, 180)", "vertical field of view, degrees"},
+    {"near", "number > 0", "near plane distance"}, {"far", "number > near", "far plane distance"},
+};
+const std::vector<KeySpec> kLightKeys = {
+    {"position", "vec3", "light position"}, {"color", "rgb", "intensity, default [1, 1, 1]"},
+    {"attenuation", "vec3 >= 0", "constant, linear, quadratic; default [1, 0, 0]"},
+    {"radius", "number >= 0", "area light radius for soft shadows, default 0"},
+};
+const std::vector<KeySpec> kMaterialKeys = {
+    {"kind", "diffuse | mirror | refractive | translucent | frosted", "the specular effect, default diffuse"},
+    {"diffuse", "rgb", "diffuse reflectance, default [0.8, 0.8, 0.8]"},
+    {"specular", "rgb", "Phong specular reflectance, default [0, 0, 0]"},
+    {"shininess", "number in [0, 128]", "Phong exponent"},
+    {"roughness", "number >= 0.125", "Ward alpha, mapped to Phong by the 1997 paper's eq. (6)"},
+    {"emission", "rgb", "emitted light, default [0, 0, 0]"},
+    {"reflectance", "number in [0, 1]", "mirror: fraction reflected, default 1"},
+    {"ior", "number > 0", "refractive, translucent, frosted: index of refraction, default 1.5"},
+    {"transmittance", "number in [0, 1]", "refractive, translucent, frosted: fraction transmitted, default 0.9"},
+    {"fog_distance", "number > 0", "translucent: distance behind the face of full fog, default 1"},
+    {"shear", "number >= 0", "frosted: stochastic shear amount, default 0.05"},
+    {"samples", "integer >= 1", "frosted: images accumulated, default 8"},
+};
+const std::vector<KeySpec> kObjectKeys = {
+    {"name", "string", "for messages and statistics"},
+    {"primitive", "box | sphere | cylinder | quad | plane", "a built-in shape (or `mesh`)"},
+    {"mesh", "path", "OBJ, OFF, PLY or STL file, relative to the scene file (or `primitive`)"},
+    {"subdivisions", "integer >= 1", "sphere slices (stacks are half), cylinder slices, plane divisions"},
+    {"translate", "vec3", "applied last"}, {"rotate", "[degrees, x, y, z]", "applied after scale"},
+    {"scale", "number or vec3", "applied first"}, {"material", "name", "a key of `materials`"},
+};
+const std::vector<KeySpec> kRenderKeys = {
+    {"width", "integer", "image width, default 640"}, {"height", "integer", "image height, default 480"},
+    {"recursion_depth", "integer >= 0", "mirror and refraction levels, default 2"},
+    {"shadow_recursion_depth", "integer >= 0", "levels that get shadows, default 1"},
+    {"soft_shadow_samples", "integer >= 1", "light samples accumulated, default 1"},
+    {"antialias_samples", "integer >= 1", "jittered images accumulated, default 1"},
+    {"shadows", "bool", "default true"}, {"reflections", "bool", "default true"},
+    {"refractions", "bool", "default true"}, {"translucency", "bool", "default true"},
+    {"frosted", "bool", "default true"}, {"profile", "indigo | mesa", "hardware profile, default indigo"},
+};
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+    prev.swap(cur);
+  }
+  return prev[b.size()];
+}
+
+class Loader {
+ public:
+  Loader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
+    const YAML::Mark m = at.Mark();
+    throw SceneError(file_, m.line + 1, m.column + 1, message);
+  }
+
+  void checkKeys(const YAML::Node& map, const std::vector<KeySpec>& keys, const std::string& where) const {
+    if (!map.IsMap()) fail(map, where + " must be a mapping");
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      if (std::any_of(keys.begin(), keys.end(), [&](const KeySpec& s) { return s.key == k; })) continue;
+      std::string best;
+      std::size_t bestD = 3;
+      for (const KeySpec& s : keys) {
+        const std::size_t d = editDistance(k, s.key);
+        if (d < bestD) bestD = d, best = std::string(s.key);
+      }
+      std::string known;
+      for (const KeySpec& s : keys) known += (known.empty() ? "" : ", ") + std::string(s.key);
+      fail(it->first, "unknown key '" + k + "' in " + where +
+                          (best.empty() ? " (known: " + known + ")" : "; did you mean '" + best + "'?"));
+    }
+  }
+
+  double number(const YAML::Node& n, const std::string& what) const {
+    if (!n.IsScalar()) fail(n, what + " must be a number");
+    const std::string s = n.Scalar();
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || end != s.c_str() + s.size()) fail(n, what + " must be a number, not '" + s + "'");
+    if (!std::isfinite(v)) fail(n, what + " must be finite, not '" + s + "'");
+    return v;
+  }
+  double number(const YAML::Node& n, const std::string& what, double lo, double hi, bool openLo = false) const {
+    const double v = number(n, what);
+    if (v < lo || v > hi || (openLo && v == lo)) {
+      std::ostringstream r;
+      r << what << " must be in " << (openLo ? "(" : "[") << lo << ", " << hi << "], not " << n.Scalar();
+      fail(n, r.str());
+    }
+    return v;
+  }
+  int integer(const YAML::Node& n, const std::string& what, long lo, long hi) const {
+    const double v = number(n, what);
+    if (v != std::floor(v)) fail(n, what + " must be an integer, not " + n.Scalar());
+    if (v < lo || v > hi)
+      fail(n, what + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], not " + n.Scalar());
+    return static_cast<int>(v);
+  }
+  bool boolean(const YAML::Node& n, const std::string& what) const {
+    if (!n.IsScalar()) fail(n, what + " must be true or false");
+    const std::string s = n.Scalar();
+    if (s == "true" || s == "yes" || s == "on") return true;
+    if (s == "false" || s == "no" || s == "off") return false;
+    fail(n, what + " must be true or false, not '" + s + "'");
+  }
+  std::string string(const YAML::Node& n, const std::string& what) const {
+    if (!n.IsScalar()) fail(n, what + " must be a string");
+    return n.Scalar();
+  }
+  Vec3 vec3(const YAML::Node& n, const std::string& what) const {
+    if (!n.IsSequence() || n.size() != 3) fail(n, what + " must be a list of 3 numbers, like [0, 1, 0]");
+    return Vec3(static_cast<float>(number(n[0], what + "[0]")), static_cast<float>(number(n[1], what + "[1]")),
+                static_cast<float>(number(n[2], what + "[2]")));
+  }
+  Vec3 rgb(const YAML::Node& n, const std::string& what) const {
+    const Vec3 c = vec3(n, what);
+    for (int i = 0; i < 3; ++i)
+      if (c[i] < 0.0f) fail(n, what + " must not be negative");
+    return c;
+  }
+
+  Scene load(YAML::Node doc) {
+    Scene s;
+    s.file = file_;
+    if (doc.IsNull()) doc = YAML::Node(YAML::NodeType::Map);
+    checkKeys(doc, kTopKeys, "the scene");
+    if (const YAML::Node r = doc["render"]) readRender(r, s.render);
+    if (const YAML::Node c = doc["camera"]) readCamera(c, s.camera);
+    if (const YAML::Node a = doc["ambient"]) s.ambient = rgb(a, "ambient");
+    if (const YAML::Node ls = doc["lights"]) {
+      if (!ls.IsSequence()) fail(ls, "lights must be a list");
+      for (const YAML::Node& l : ls) s.lights.push_back(readLight(l));
+    }
+    std::map<std::string, int> materialIndex;
+    s.materials.push_back(SceneMaterial{"default"});
+    if (const YAML::Node ms = doc["materials"]) {
+      if (!ms.IsMap()) fail(ms, "materials must be a mapping from names to materials");
+      for (auto it = ms.begin(); it != ms.end(); ++it) {
+        SceneMaterial m = readMaterial(it->second, it->first.as<std::string>());
+        materialIndex[m.name] = static_cast<int>(s.materials.size());
+        s.materials.push_back(std::move(m));
+      }
+    }
+    if (const YAML::Node os = doc["objects"]) {
+      if (!os.IsSequence()) fail(os, "objects must be a list");
+      for (const YAML::Node& o : os) s.objects.push_back(readObject(o, materialIndex, s));
+    }
+    checkLimits(doc, s);
+    return s;
+  }
+
+  void readRender(const YAML::Node& n, RenderSettings& r) const {
+    checkKeys(n, kRenderKeys, "render");
+    if (n["width"]) r.width = integer(n["width"], "render.width", 1, Framebuffer::kMaxSide);
+    if (n["height"]) r.height = integer(n["height"], "render.height", 1, Framebuffer::kMaxSide);
+    if (n["recursion_depth"]) r.recursionDepth = integer(n["recursion_depth"], "render.recursion_depth", 0, 1 << 20);
+    if (n["shadow_recursion_depth"])
+      r.shadowRecursionDepth = integer(n["shadow_recursion_depth"], "render.shadow_recursion_depth", 0, 1 << 20);
+    if (n["soft_shadow_samples"]) r.softShadowSamples = integer(n["soft_shadow_samples"], "render.soft_shadow_samples", 1, 1024);
+    if (n["antialias_samples"]) r.antialiasSamples = integer(n["antialias_samples"], "render.antialias_samples", 1, 1024);
+    if (n["shadows"]) r.shadows = boolean(n["shadows"], "render.shadows");
+    if (n["reflections"]) r.reflections = boolean(n["reflections"], "render.reflections");
+    if (n["refractions"]) r.refractions = boolean(n["refractions"], "render.refractions");
+    if (n["translucency"]) r.translucency = boolean(n["translucency"], "render.translucency");
+    if (n["frosted"]) r.frosted = boolean(n["frosted"], "render.frosted");
+    if (n["profile"]) {
+      r.profile = string(n["profile"], "render.profile");
+      if (!findProfile(r.profile)) fail(n["profile"], "unknown profile '" + r.profile + "' (known: indigo, mesa)");
+    }
+  }
+
+  void readCamera(const YAML::Node& n, Camera& c) const {
+    checkKeys(n, kCameraKeys, "camera");
+    if (n["position"]) c.position = vec3(n["position"], "camera.position");
+    if (n["look_at"]) c.lookAt = vec3(n["look_at"], "camera.look_at");
+    if (n["up"]) c.up = vec3(n["up"], "camera.up");
+    if (n["fov"]) c.fovY = static_cast<float>(number(n["fov"], "camera.fov", 0.0, 180.0, true));
+    if (n["near"]) c.near = static_cast<float>(number(n["near"], "camera.near", 0.0, 1e30, true));
+    if (n["far"]) c.far = static_cast<float>(number(n["far"], "camera.far", 0.0, 1e30, true));
+    const YAML::Node at = n["far"] ? n["far"] : n;
+    if (!(c.far > c.near)) fail(at, "camera.far must be greater than camera.near");
+    if (c.position == c.lookAt) fail(n["look_at"] ? n["look_at"] : n, "camera.look_at must differ from camera.position");
+    const Vec3 f = c.lookAt - c.position;
+    const Vec3 side = glm::cross(f, c.up);
+    if (glm::dot(side, side) == 0.0f) fail(n["up"] ? n["up"] : n, "camera.up must not be parallel to the view direction");
+  }
+
+  PointLight readLight(const YAML::Node& n) const {
+    checkKeys(n, kLightKeys, "a light");
+    PointLight l;
+    if (!n["position"]) fail(n, "a light needs a position");
+    l.position = vec3(n["position"], "light position");
+    if (n["color"]) l.color = rgb(n["color"], "light color");
+    if (n["attenuation"]) {
+      l.attenuation = rgb(n["attenuation"], "light attenuation");
+      if (l.attenuation == Vec3(0.0f)) fail(n["attenuation"], "light attenuation must not be all zero");
+    }
+    if (n["radius"]) l.radius = static_cast<float>(number(n["radius"], "light radius", 0.0, 1e30));
+    return l;
+  }
+
+  SceneMaterial readMaterial(const YAML::Node& n, const std::string& name) const {
+    const std::string where = "material '" + name + "'";
+    checkKeys(n, kMaterialKeys, where);
+    SceneMaterial m;
+    m.name = name;
+    if (n["kind"]) {
+      const std::string k = string(n["kind"], where + " kind");
+      static const std::map<std::string, MaterialKind> kinds = {
+          {"diffuse", MaterialKind::Diffuse}, {"mirror", MaterialKind::Mirror}, {"refractive", MaterialKind::Refractive},
+          {"translucent", MaterialKind::Translucent}, {"frosted", MaterialKind::Frosted}};
+      const auto it = kinds.find(k);
+      if (it == kinds.end())
+        fail(n["kind"], where + " kind must be diffuse, mirror, refractive, translucent or frosted, not '" + k + "'");
+      m.kind = it->second;
+    }
+    if (n["diffuse"]) m.diffuse = rgb(n["diffuse"], where + " diffuse");
+    if (n["specular"]) m.specular = rgb(n["specular"], where + " specular");
+    if (n["emission"]) m.emission = rgb(n["emission"], where + " emission");
+    if (n["shininess"] && n["roughness"]) fail(n["roughness"], where + " gives both shininess and roughness; give one");
+    if (n["shininess"]) m.shininess = static_cast<float>(number(n["shininess"], where + " shininess", 0.0, 128.0));
+    if (n["roughness"]) {
+      // 1997 paper eq. (6): the Chi-square fit of Ward's isotropic Gaussian by
+      // Phong: exponent 1.999 / alpha^2, scale 0.0398 * exponent.
+      const double alpha = number(n["roughness"], where + " roughness");
+      const double exponent = alpha > 0.0 ? 1.999 / (alpha * alpha) : 1e30;
+      if (!(exponent <= 128.0))
+        fail(n["roughness"], where + " roughness must be at least 0.125: eq. (6) gives a Phong exponent of 1.999/alpha^2, "
+                                 "and GL's largest is 128");
+      m.shininess = static_cast<float>(exponent);
+      m.specular *= static_cast<float>(0.0398 * exponent);
+    }
+    if (n["reflectance"]) m.reflectance = static_cast<float>(number(n["reflectance"], where + " reflectance", 0.0, 1.0));
+    if (n["ior"]) {
+      const double ior = number(n["ior"], where + " ior");
+      if (ior <= 0.0) fail(n["ior"], where + " ior (index of refraction) must be greater than 0, not " + n["ior"].Scalar());
+      m.ior = static_cast<float>(ior);
+    }
+    if (n["transmittance"]) m.transmittance = static_cast<float>(number(n["transmittance"], where + " transmittance", 0.0, 1.0));
+    if (n["fog_distance"]) m.fogDistance = static_cast<float>(number(n["fog_distance"], where + " fog_distance", 0.0, 1e30, true));
+    if (n["shear"]) m.shear = static_cast<float>(number(n["shear"], where + " shear", 0.0, 1e30));
+    if (n["samples"]) m.samples = integer(n["samples"], where + " samples", 1, 1024);
+    return m;
+  }
+
+  SceneObject readObject(const YAML::Node& n, const std::map<std::string, int>& materials, const Scene& s) const {
+    checkKeys(n, kObjectKeys, "an object");
+    SceneObject o;
+    o.line = n.Mark().line + 1;
+    o.name = n["name"] ? string(n["name"], "object name") : "object at line " + std::to_string(o.line);
+    const std::string where = "object '" + o.name + "'";
+    if (n["primitive"] && n["mesh"]) fail(n["mesh"], where + " gives both primitive and mesh; give one");
+    if (!n["primitive"] && !n["mesh"]) fail(n, where + " needs a primitive or a mesh");
+    const int sub = n["subdivisions"] ? integer(n["subdivisions"], where + " subdivisions", 1, 4096) : 0;
+    if (n["primitive"]) {
+      const std::string p = string(n["primitive"], where + " primitive");
+      if (p == "box") o.mesh = makeBox();
+      else if (p == "sphere") o.mesh = makeSphere(sub ? sub : 32, sub ? std::max(2, sub / 2) : 16);
+      else if (p == "cylinder") o.mesh = makeCylinder(sub ? std::max(3, sub) : 32);
+      else if (p == "quad") o.mesh = makeQuad();
+      else if (p == "plane") o.mesh = makePlane(sub ? sub : 1);
+      else fail(n["primitive"], where + " primitive must be box, sphere, cylinder, quad or plane, not '" + p + "'");
+    } else {
+      const std::string rel = string(n["mesh"], where + " mesh");
+      const std::filesystem::path path = std::filesystem::path(file_).parent_path() / rel;
+      try {
+        o.mesh = loadMeshFile(path.string());
+      } catch (const std::exception& e) {
+        fail(n["mesh"], where + ": " + e.what());
+      }
+    }
+    Mat4 m(1.0f);
+    if (n["translate"]) m = multiply(m, translationMatrix(vec3(n["translate"], where + " translate").x,
+                                                           vec3(n["translate"], where + " translate").y,
+                                                           vec3(n["translate"], where + " translate").z));
+    if (n["rotate"]) {
+      const YAML::Node r = n["rotate"];
+      if (!r.IsSequence() || r.size() != 4) fail(r, where + " rotate must be [degrees, x, y, z]");
+      const Vec3 axis(static_cast<float>(number(r[1], "rotate x")), static_cast<float>(number(r[2], "rotate y")),
+                      static_cast<float>(number(r[3], "rotate z")));
+      if (glm::dot(axis, axis) == 0.0f) fail(r, where + " rotate axis must not be zero");
+      m = multiply(m, rotationMatrix(static_cast<float>(number(r[0], "rotate angle")), axis.x, axis.y, axis.z));
+    }
+    if (n["scale"]) {
+      const YAML::Node sc = n["scale"];
+      const Vec3 v = sc.IsScalar() ? Vec3(static_cast<float>(number(sc, where + " scale"))) : vec3(sc, where + " scale");
+      if (v.x == 0.0f || v.y == 0.0f || v.z == 0.0f) fail(sc, where + " scale must not be zero");
+      m = multiply(m, scaleMatrix(v.x, v.y, v.z));
+    }
+    transformMesh(o.mesh, m);
+    if (n["material"]) {
+      const std::string name = string(n["material"], where + " material");
+      const auto it = materials.find(name);
+      if (it == materials.end()) {
+        std::string best;
+        std::size_t bestD = 3;
+        for (const auto& [k, v] : materials)
+          if (editDistance(name, k) < bestD) bestD = editDistance(name, k), best = k;
+        fail(n["material"], where + " uses unknown material '" + name + "'" +
+                                (best.empty() ? "" : "; did you mean '" + best + "'?"));
+      }
+      o.material = it->second;
+    }
+    if (s.materials[static_cast<std::size_t>(o.material)].specularKind()) checkPlanarFaces(n, o, where);
+    return o;
+  }
+
+  // The papers' specular effects treat every face as a plane with one
+  // virtual camera: faces must be planar and have area.
+  void checkPlanarFaces(const YAML::Node& n, const SceneObject& o, const std::string& where) const {
+    for (std::size_t f = 0; f < o.mesh.faces.size(); ++f) {
+      const auto& face = o.mesh.faces[f];
+      const Vec3 p0 = o.mesh.positions[face[0]];
+      glm::dvec3 normal(0.0);
+      for (std::size_t i = 0; i < face.size(); ++i) {  // Newell's normal
+        const glm::dvec3 a = o.mesh.positions[face[i]], b = o.mesh.positions[face[(i + 1) % face.size()]];
+        normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+      }
+      const double area2 = glm::length(normal);
+      double extent = 0.0;
+      for (std::uint32_t v : face) extent = std::max(extent, glm::length(glm::dvec3(o.mesh.positions[v] - p0)));
+      if (!(area2 > 1e-12 * std::max(1.0, extent * extent)))
+        fail(n, where + " has a zero-area face (face " + std::to_string(f) + "); specular objects need faces with area");
+      const glm::dvec3 unit = normal / area2;
+      for (std::uint32_t v : face) {
+        const double d = std::fabs(glm::dot(glm::dvec3(o.mesh.positions[v] - p0), unit));
+        if (d > 1e-4 * std::max(1.0, extent))
+          fail(n, where + " has a non-planar face (face " + std::to_string(f) + ", a corner " + std::to_string(d) +
+                      " off its plane); the paper's method needs planar specular faces");
+      }
+    }
+  }
+
+  void checkLimits(const YAML::Node& doc, const Scene& s) const {
+    const HardwareProfile p = *findProfile(s.render.profile);
+    // 1994 paper: recursion levels live below SHAD_MIN (half the stencil
+    // range), shadow counts between SHAD_MIN and the maximum.
+    const int shadMin = static_cast<int>((p.stencilMax() + 1) / 2);
+    const int maxDepth = shadMin - 1;
+    if (s.render.recursionDepth > maxDepth) {
+      const YAML::Node at = doc["render"] && doc["render"]["recursion_depth"] ? doc["render"]["recursion_depth"] : doc;
+      fail(at, "render.recursion_depth " + std::to_string(s.render.recursionDepth) + " needs more stencil levels than the " +
+                   std::to_string(p.stencilBits) + "-bit stencil of profile '" + p.name + "' holds: recursion levels lie below SHAD_MIN = " +
+                   std::to_string(shadMin) + ", so the deepest is " + std::to_string(maxDepth));
+    }
+  }
+
+ private:
+  std::string file_;
+};
+
+void applyOverride(YAML::Node& doc, const std::string& kv) {
+  const auto eq = kv.find('=');
+  if (eq == std::string::npos || eq == 0) throw SceneError("--set", 1, 1, "'" + kv + "' must be key.path=value");
+  const std::string path = kv.substr(0, eq), value = kv.substr(eq + 1);
+  std::vector<std::string> keys;
+  for (std::size_t start = 0;;) {
+    const std::size_t dot = path.find('.', start);
+    keys.push_back(path.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(value);
+  } catch (const YAML::Exception& e) {
+    throw SceneError("--set", 1, static_cast<int>(eq) + 2, "'" + value + "' is not a YAML value: " + e.msg);
+  }
+  // yaml-cpp nodes are handles: walk down by copying handles, then assign.
+  std::vector<YAML::Node> chain{doc};
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    YAML::Node next = chain.back()[keys[i]];
+    if (!next.IsDefined() || next.IsNull()) chain.back()[keys[i]] = YAML::Node(YAML::NodeType::Map);
+    chain.push_back(chain.back()[keys[i]]);
+  }
+  chain.back()[keys.back()] = parsed;
+}
+
+}  // namespace
+
+Scene loadSceneText(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw SceneError(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg);
+  }
+  for (const std::string& kv : overrides) applyOverride(doc, kv);
+  try {
+    return Loader(file).load(doc);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
+  }
+}
+
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path, 0, 0, "cannot read the scene file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return loadSceneText(ss.str(), path, overrides);
+}
+
+std::string describeSceneFormat() {
+  std::ostringstream o;
+  auto section = [&](const std::string& name, const std::string& type, const std::vector<KeySpec>& keys, bool last) {
+    o << "    \"" << name << "\": {\"type\": \"" << type << "\", \"properties\": {\n";
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      o << "      \"" << keys[i].key << "\": {\"type\": \"" << keys[i].type << "\", \"description\": \""
+        << keys[i].meaning << "\"}" << (i + 1 < keys.size() ? "," : "") << "\n";
+    o << "    }}" << (last ? "" : ",") << "\n";
+  };
+  o << "{\n  \"title\": \"MPR scene\",\n  \"type\": \"object\",\n  \"additionalProperties\": false,\n  \"properties\": {\n";
+  section("camera", "object", kCameraKeys, false);
+  o << "    \"ambient\": {\"type\": \"rgb\", \"description\": \"scene ambient light\"},\n";
+  section("lights[]", "array of object", kLightKeys, false);
+  section("materials.<name>", "object", kMaterialKeys, false);
+  section("objects[]", "array of object", kObjectKeys, false);
+  section("render", "object", kRenderKeys, true);
+  o << "  }\n}\n";
+  return o.str();
+}
+
+}  // namespace mpr
