@@ -117,6 +117,11 @@ class Loader {
   double number(const YAML::Node& n, const std::string& what) const {
     if (!n.IsScalar()) fail(n, what + " must be a number");
     const std::string s = n.Scalar();
+    // YAML's own spellings of the non-finite values.
+    static const char* const nonFinite[] = {".nan", ".NaN", ".NAN", ".inf", ".Inf", ".INF", "+.inf", "+.Inf",
+                                            "+.INF", "-.inf", "-.Inf", "-.INF"};
+    for (const char* nf : nonFinite)
+      if (s == nf) fail(n, what + " must be finite, not '" + s + "'");
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
     if (s.empty() || end != s.c_str() + s.size()) fail(n, what + " must be a number, not '" + s + "'");

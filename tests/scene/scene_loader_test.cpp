@@ -1,0 +1,155 @@
+// Scene files: a valid scene loads as written; every kind of mistake is
+// reported with its line and column and a useful message.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "scene/scene_loader.hpp"
+
+namespace mpr {
+namespace {
+
+std::string errorOf(const std::string& text) {
+  try {
+    loadSceneText(text, "s.yaml");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SceneLoader, LoadsAValidScene) {
+  const Scene s = loadSceneText(R"(
+camera: {position: [0, 1, 5], look_at: [0, 1, 0], fov: 50, near: 0.5, far: 20}
+ambient: [0.2, 0.2, 0.2]
+lights:
+  - {position: [1, 3, 1], color: [1, 0.5, 0.25], attenuation: [1, 0.1, 0], radius: 0.3}
+materials:
+  shiny: {diffuse: [0.5, 0.5, 0.5], specular: [1, 1, 1], roughness: 0.25}
+  glass: {kind: refractive, ior: 1.33}
+objects:
+  - {name: box, primitive: box, translate: [1, 0, 0], scale: 2, material: shiny}
+  - {name: pane, primitive: quad, material: glass}
+render: {width: 32, height: 24, recursion_depth: 3, profile: mesa, shadows: false}
+)", "s.yaml");
+  EXPECT_EQ(s.camera.fovY, 50.0f);
+  EXPECT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].color, Vec3(1, 0.5f, 0.25f));
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[0].mesh.triangles.size(), 12u);
+  // Box of side 1 scaled by 2 and moved by 1 in x: x from 0 to 2.
+  float minX = 1e9f, maxX = -1e9f;
+  for (const Vec3& p : s.objects[0].mesh.positions) minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
+  EXPECT_EQ(minX, 0.0f);
+  EXPECT_EQ(maxX, 2.0f);
+  // Eq. (6) of the 1997 paper: exponent 1.999 / 0.25^2 = 31.984, scale 0.0398 * 31.984 = 1.2730.
+  const SceneMaterial& shiny = s.materials[static_cast<std::size_t>(s.objects[0].material)];
+  EXPECT_NEAR(shiny.shininess, 31.984f, 1e-4f);
+  EXPECT_NEAR(shiny.specular.x, 1.27296f, 1e-4f);
+  EXPECT_EQ(s.materials[static_cast<std::size_t>(s.objects[1].material)].kind, MaterialKind::Refractive);
+  EXPECT_EQ(s.render.width, 32);
+  EXPECT_EQ(s.render.profile, "mesa");
+  EXPECT_FALSE(s.render.shadows);
+}
+
+TEST(SceneLoader, OverridesApplyBeforeValidation) {
+  const Scene s = loadSceneText("render: {width: 64}\n", "s.yaml", {"render.width=20", "render.height=10", "camera.fov=30"});
+  EXPECT_EQ(s.render.width, 20);
+  EXPECT_EQ(s.render.height, 10);
+  EXPECT_EQ(s.camera.fovY, 30.0f);
+  EXPECT_THROW(loadSceneText("", "s.yaml", {"render.width"}), SceneError);
+}
+
+TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
+  EXPECT_EQ(errorOf("camera:\n  positon: [0, 1, 2]\n"),
+            "s.yaml:2:3: unknown key 'positon' in camera; did you mean 'position'?");
+  EXPECT_EQ(errorOf("camra: {}\n"), "s.yaml:1:1: unknown key 'camra' in the scene; did you mean 'camera'?");
+  EXPECT_EQ(errorOf("render:\n  width: wide\n"), "s.yaml:2:10: render.width must be a number, not 'wide'");
+  EXPECT_EQ(errorOf("render:\n  width: 1.5\n"), "s.yaml:2:10: render.width must be an integer, not 1.5");
+  EXPECT_EQ(errorOf("ambient: [0, .nan, 0]\n"), "s.yaml:1:14: ambient[1] must be finite, not '.nan'");
+  EXPECT_EQ(errorOf("ambient: [0, 1]\n"), "s.yaml:1:10: ambient must be a list of 3 numbers, like [0, 1, 0]");
+  EXPECT_EQ(errorOf("camera: {position: [0, 0, 0], look_at: [0, 0, 0]}\n"),
+            "s.yaml:1:40: camera.look_at must differ from camera.position");
+  EXPECT_EQ(errorOf("materials:\n  g: {kind: refractive, ior: 0}\n"),
+            "s.yaml:2:30: material 'g' ior (index of refraction) must be greater than 0, not 0");
+  EXPECT_EQ(errorOf("materials:\n  g: {kind: glassy}\n"),
+            "s.yaml:2:13: material 'g' kind must be diffuse, mirror, refractive, translucent or frosted, not 'glassy'");
+  EXPECT_EQ(errorOf("objects:\n  - {primitive: box, material: shinny}\nmaterials: {shiny: {}}\n"),
+            "s.yaml:2:32: object 'object at line 2' uses unknown material 'shinny'; did you mean 'shiny'?");
+  EXPECT_EQ(errorOf("objects:\n  - {primitive: torus}\n"),
+            "s.yaml:2:17: object 'object at line 2' primitive must be box, sphere, cylinder, quad or plane, not 'torus'");
+  EXPECT_EQ(errorOf("objects:\n  - {name: a}\n"), "s.yaml:2:5: object 'a' needs a primitive or a mesh");
+  EXPECT_EQ(errorOf("render: {recursion_depth: 128}\n"),
+            "s.yaml:1:27: render.recursion_depth 128 needs more stencil levels than the 8-bit stencil of profile "
+            "'indigo' holds: recursion levels lie below SHAD_MIN = 128, so the deepest is 127");
+  EXPECT_EQ(errorOf("materials:\n  m: {roughness: 0.1}\n"),
+            "s.yaml:2:18: material 'm' roughness must be at least 0.125: eq. (6) gives a Phong exponent of "
+            "1.999/alpha^2, and GL's largest is 128");
+  EXPECT_EQ(errorOf("camera: [1, 2\n"), "s.yaml:2:1: YAML syntax: end of sequence flow not found");
+}
+
+class MeshFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / ("mpr_scene_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  std::string errorOfFile(const std::string& yaml) {
+    const std::string path = write("scene.yaml", yaml);
+    try {
+      loadSceneFile(path);
+    } catch (const SceneError& e) {
+      const std::string msg = e.what();
+      return msg.substr(msg.find(".yaml:") + 6);  // drop the temporary folder
+    }
+    return "no error";
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(MeshFiles, MeshesLoadRelativeToTheScene) {
+  write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\n");
+  const std::string path = write("scene.yaml", "objects:\n  - {mesh: tri.obj, translate: [0, 0, 1]}\n");
+  const Scene s = loadSceneFile(path);
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_EQ(s.objects[0].mesh.faces.size(), 1u);
+  EXPECT_EQ(s.objects[0].mesh.triangles.size(), 2u);
+  EXPECT_EQ(s.objects[0].mesh.positions[0].z, 1.0f);
+}
+
+TEST_F(MeshFiles, MissingAndUnreadableMeshes) {
+  EXPECT_NE(errorOfFile("objects:\n  - {name: m, mesh: nothere.obj}\n").find("2:21: object 'm': mesh file '"), std::string::npos);
+  write("junk.obj", "this is not a mesh\n");
+  EXPECT_NE(errorOfFile("objects:\n  - {name: m, mesh: junk.obj}\n").find("2:21: object 'm': mesh file"), std::string::npos);
+}
+
+TEST_F(MeshFiles, SpecularObjectsNeedPlanarFacesWithArea) {
+  write("bent.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nf 1 2 3 4\n");
+  write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+  const std::string mats = "materials: {m: {kind: mirror}}\n";
+  EXPECT_NE(errorOfFile(mats + "objects:\n  - {name: bent, mesh: bent.obj, material: m}\n").find("has a non-planar face (face 0"),
+            std::string::npos);
+  EXPECT_NE(errorOfFile(mats + "objects:\n  - {name: flat, mesh: flat.obj, material: m}\n").find("has a zero-area face (face 0)"),
+            std::string::npos);
+  // The same bent face is fine on a diffuse object.
+  EXPECT_EQ(errorOfFile("objects:\n  - {name: bent, mesh: bent.obj}\n"), "no error");
+}
+
+TEST(SceneLoader, DefaultSceneLoadsAndDescribeNamesEveryKey) {
+  const Scene s = loadSceneText(defaultSceneText(), "<default>");
+  EXPECT_EQ(s.lights.size(), 1u);
+  EXPECT_GE(s.objects.size(), 6u);
+  const std::string d = describeSceneFormat();
+  for (const char* k : {"\"camera\"", "\"look_at\"", "\"roughness\"", "\"fog_distance\"", "\"recursion_depth\"", "\"subdivisions\""})
+    EXPECT_NE(d.find(k), std::string::npos) << k;
+}
+
+}  // namespace
+}  // namespace mpr
