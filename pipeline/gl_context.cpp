@@ -166,10 +166,8 @@ void GLContext::clear(std::uint32_t mask) {
   which.stencil = mask & GL_STENCIL_BUFFER_BIT;
   which.accum = mask & GL_ACCUM_BUFFER_BIT;
   const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
-  clearMasks_.color = frag_.colorMask;
-  clearMasks_.depth = frag_.depth.writeMask;
-  clearMasks_.stencil = frag_.stencil.writeMask;
-  clearBuffers(fb_, region, which, clearValues_, clearMasks_);
+  clearBuffers(fb_, region, which, clearValues_,
+               ClearMasks{frag_.colorMask, frag_.depth.writeMask, frag_.stencil.writeMask});
 }
 
 void GLContext::colorMask(bool r, bool g, bool b, bool a) {
@@ -243,7 +241,6 @@ void GLContext::stencilFunc(GLenumValue func, int ref, std::uint32_t mask) {
   if (!f) return setError(GL_INVALID_ENUM);
   frag_.stencil.func = *f;
   // GL: "ref is clamped to the range [0, 2^s - 1]".
-  stencilRefUnclamped_ = ref;
   frag_.stencil.ref = static_cast<std::uint32_t>(std::clamp<int>(ref, 0, fb_.profile().stencilMax()));
   frag_.stencil.valueMask = mask & fb_.profile().stencilMax();
 }

@@ -176,10 +176,8 @@ class GLContext {
   PixelRect scissorBox_;
   bool scissorEnabled_ = false;
   ClearValues clearValues_;
-  ClearMasks clearMasks_;
   std::array<float, 4> clearAccumValue_{0, 0, 0, 0};
   FragmentState frag_;
-  int stencilRefUnclamped_ = 0;
 
   // rasterization state
   bool cullEnabled_ = false;

@@ -87,12 +87,25 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
   return prev[b.size()];
 }
 
+struct Override {
+  std::string text;  // "key.path=value" as given
+  YAML::Node node;   // the parsed value, placed in the document
+};
+
 class Loader {
  public:
-  Loader(std::string file) : file_(std::move(file)) {}
+  Loader(std::string file, std::vector<Override> overrides) : file_(std::move(file)), overrides_(std::move(overrides)) {}
 
   [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
+    // A value that came from --set has no place in the file: name the option.
+    for (const Override& o : overrides_)
+      if (at.is(o.node)) throw SceneError("--set " + o.text, 1, 1, message);
     const YAML::Mark m = at.Mark();
+    if (m.is_null() && !overrides_.empty()) {  // a key --set created
+      std::string all;
+      for (const Override& o : overrides_) all += (all.empty() ? "" : " --set ") + o.text;
+      throw SceneError("--set " + all, 1, 1, message);
+    }
     throw SceneError(file_, m.line + 1, m.column + 1, message);
   }
 
@@ -395,9 +408,10 @@ class Loader {
 
  private:
   std::string file_;
+  std::vector<Override> overrides_;
 };
 
-void applyOverride(YAML::Node& doc, const std::string& kv) {
+Override applyOverride(YAML::Node& doc, const std::string& kv) {
   const auto eq = kv.find('=');
   if (eq == std::string::npos || eq == 0) throw SceneError("--set", 1, 1, "'" + kv + "' must be key.path=value");
   const std::string path = kv.substr(0, eq), value = kv.substr(eq + 1);
@@ -422,6 +436,7 @@ void applyOverride(YAML::Node& doc, const std::string& kv) {
     chain.push_back(chain.back()[keys[i]]);
   }
   chain.back()[keys.back()] = parsed;
+  return {kv, chain.back()[keys.back()]};
 }
 
 }  // namespace
@@ -433,9 +448,10 @@ Scene loadSceneText(const std::string& text, const std::string& file, const std:
   } catch (const YAML::ParserException& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg);
   }
-  for (const std::string& kv : overrides) applyOverride(doc, kv);
+  std::vector<Override> applied;
+  for (const std::string& kv : overrides) applied.push_back(applyOverride(doc, kv));
   try {
-    return Loader(file).load(doc);
+    return Loader(file, applied).load(doc);
   } catch (const YAML::Exception& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
   }

@@ -60,6 +60,19 @@ TEST(SceneLoader, OverridesApplyBeforeValidation) {
   EXPECT_EQ(s.render.height, 10);
   EXPECT_EQ(s.camera.fovY, 30.0f);
   EXPECT_THROW(loadSceneText("", "s.yaml", {"render.width"}), SceneError);
+  // Errors in a --set value name the option, not a line of the file.
+  try {
+    loadSceneText("render: {width: 64}\n", "s.yaml", {"render.width=abc"});
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "--set render.width=abc:1:1: render.width must be a number, not 'abc'");
+  }
+  try {
+    loadSceneText("", "s.yaml", {"render.widht=3"});
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "--set render.widht=3:1:1: unknown key 'widht' in render; did you mean 'width'?");
+  }
 }
 
 TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
