@@ -53,7 +53,7 @@ int runGl(const GlOptions& o) {
   ScriptHooks hooks;
   hooks.onPass = [&](const ScriptCommand&) { ++passes; };
   hooks.onGLError = [&](const ScriptCommand& c, std::uint32_t e) {
-    std::cerr << script.file << ":" << c.line << ": " << glErrorName(e) << " in " << glCallName(c.call) << "\n";
+    std::cerr << script.file << ":" << glErrorReport(c, e) << "\n";
   };
   if (!o.dumpDir.empty())
     hooks.onSnapshot = [&](const ScriptCommand& c, const GLContext& ctx) {

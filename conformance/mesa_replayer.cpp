@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <memory>
 
-#include "pipeline/gl_enums.hpp"
+#include "pipeline/gl_script_runner.hpp"
 #include "pipeline/transforms.hpp"
 
 namespace mpr {
@@ -150,8 +150,7 @@ MesaReplay replayOnMesa(const Script& script, const std::string& driver) {
     // glGetError is itself an error between glBegin and glEnd.
     if (!inBegin)
       for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
-        out.glErrors.push_back(std::to_string(c.line) + ": " + std::string(glErrorName(e)) + " in " +
-                               std::string(glCallName(c.call)));
+        out.glErrors.push_back(glErrorReport(c, e));
   }
   glFinish();
   out.snapshots.push_back(readBuffers("final", script.width, script.height));

@@ -35,8 +35,7 @@ MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile) {
     if (c.call == GLCall::End) inBegin = false;
     if (inBegin) continue;
     if (const std::uint32_t e = gl.getError())
-      out.glErrors.push_back(std::to_string(c.line) + ": " + std::string(glErrorName(e)) + " in " +
-                             std::string(glCallName(c.call)));
+      out.glErrors.push_back(glErrorReport(c, e));
   }
   out.snapshots.push_back(collect("final", gl.framebuffer()));
   return out;

@@ -19,6 +19,16 @@ std::string temporaryNameFor(const std::string& path) {
       .string();
 }
 
+// Moves a finished temporary file over `path`; removes it on failure.
+void renameIntoPlace(const std::string& tmp, const std::string& path) {
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": " + ec.message());
+  }
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::string& bytes) {
@@ -32,12 +42,7 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
       throw std::runtime_error("cannot write " + path);
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
-  }
+  renameIntoPlace(tmp, path);
 }
 
 void writeColorImage(const Framebuffer& fb, const std::string& path) {
@@ -60,12 +65,7 @@ void writeColorImage(const Framebuffer& fb, const std::string& path) {
     std::remove(tmp.c_str());
     throw std::runtime_error("cannot write " + path + ": " + why);
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
-  }
+  renameIntoPlace(tmp, path);
 }
 
 }  // namespace mpr

@@ -14,6 +14,7 @@
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl_enums.hpp"
+#include "pipeline/spelling.hpp"
 
 namespace mpr {
 namespace {
@@ -118,29 +119,9 @@ const std::set<std::uint32_t>& unsupportedCapabilities() {
 }
 
 std::string closestCallName(std::string_view name) {
-  // Edit distance to the nearest name in the call set, for "did you mean".
-  auto distance = [](std::string_view a, std::string_view b) {
-    std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-      cur[0] = i;
-      for (size_t j = 1; j <= b.size(); ++j)
-        cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1,
-                           prev[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1)});
-      prev.swap(cur);
-    }
-    return prev[b.size()];
-  };
-  std::string best;
-  size_t bestD = 4;
-  for (const CallSpec& c : kCalls) {
-    const size_t d = distance(name, c.name);
-    if (d < bestD) {
-      bestD = d;
-      best = std::string(c.name);
-    }
-  }
-  return best;
+  std::vector<std::string_view> names;
+  for (const CallSpec& c : kCalls) names.push_back(c.name);
+  return closestMatch(name, names, 4, true);
 }
 
 // The number of values a `...v` call takes for its pname, or 0 when the pname

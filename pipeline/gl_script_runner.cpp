@@ -2,9 +2,15 @@
 
 #include <GL/gl.h>
 
+#include "pipeline/gl_enums.hpp"
+
 namespace mpr {
 // Calls GL forbids between glBegin and glEnd raise GL_INVALID_OPERATION in the
 // context methods themselves (GL 1.1 section 2.6.3).
+std::string glErrorReport(const ScriptCommand& c, std::uint32_t error) {
+  return std::to_string(c.line) + ": " + std::string(glErrorName(error)) + " in " + std::string(glCallName(c.call));
+}
+
 void executeCall(GLContext& gl, const ScriptCommand& cmd) {
   const auto& a = cmd.args;
   auto f = [&](size_t i) { return static_cast<float>(a[i].number); };

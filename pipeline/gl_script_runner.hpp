@@ -3,6 +3,7 @@
 // errors, pass boundaries and snapshot points to the caller.
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "pipeline/gl_context.hpp"
 #include "pipeline/gl_script.hpp"
@@ -15,6 +16,9 @@ struct ScriptHooks {
   // A call GL rejected: the call had no effect and `error` is what glGetError returns.
   std::function<void(const ScriptCommand& call, std::uint32_t error)> onGLError;
 };
+
+// "LINE: GL_INVALID_ENUM in glStencilFunc": how a GL error is reported.
+std::string glErrorReport(const ScriptCommand& call, std::uint32_t error);
 
 // One call on the context (no error reporting).
 void executeCall(GLContext& gl, const ScriptCommand& call);

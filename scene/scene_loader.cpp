@@ -12,6 +12,7 @@
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
+#include "pipeline/spelling.hpp"
 #include "pipeline/transforms.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/primitives.hpp"
@@ -75,18 +76,6 @@ const std::vector<KeySpec> kRenderKeys = {
     {"frosted", "bool", "default true"}, {"profile", "indigo | mesa", "hardware profile, default indigo"},
 };
 
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-    prev.swap(cur);
-  }
-  return prev[b.size()];
-}
-
 struct Override {
   std::string text;  // "key.path=value" as given
   YAML::Node node;   // the parsed value, placed in the document
@@ -114,12 +103,9 @@ class Loader {
     for (auto it = map.begin(); it != map.end(); ++it) {
       const std::string k = it->first.as<std::string>();
       if (std::any_of(keys.begin(), keys.end(), [&](const KeySpec& s) { return s.key == k; })) continue;
-      std::string best;
-      std::size_t bestD = 3;
-      for (const KeySpec& s : keys) {
-        const std::size_t d = editDistance(k, s.key);
-        if (d < bestD) bestD = d, best = std::string(s.key);
-      }
+      std::vector<std::string_view> names;
+      for (const KeySpec& s : keys) names.push_back(s.key);
+      const std::string best = closestMatch(k, names, 3);
       std::string known;
       for (const KeySpec& s : keys) known += (known.empty() ? "" : ", ") + std::string(s.key);
       fail(it->first, "unknown key '" + k + "' in " + where +
@@ -353,10 +339,9 @@ class Loader {
       const std::string name = string(n["material"], where + " material");
       const auto it = materials.find(name);
       if (it == materials.end()) {
-        std::string best;
-        std::size_t bestD = 3;
-        for (const auto& [k, v] : materials)
-          if (editDistance(name, k) < bestD) bestD = editDistance(name, k), best = k;
+        std::vector<std::string_view> names;
+        for (const auto& entry : materials) names.push_back(entry.first);
+        const std::string best = closestMatch(name, names, 3);
         fail(n["material"], where + " uses unknown material '" + name + "'" +
                                 (best.empty() ? "" : "; did you mean '" + best + "'?"));
       }
