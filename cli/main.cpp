@@ -5,6 +5,7 @@
 #include "cli/conform_command.hpp"
 #include "cli/gl_command.hpp"
 #include "cli/render_command.hpp"
+#include "cli/step_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   mpr::cli::addGlCommand(app, exitCode);
   mpr::cli::addConformCommand(app, exitCode);
   mpr::cli::addRenderCommand(app, exitCode);
+  mpr::cli::addStepCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

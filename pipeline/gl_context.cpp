@@ -76,6 +76,8 @@ GLContext::GLContext(int width, int height, const HardwareProfile& profile)
   viewport(0, 0, width, height);
   scissorBox_ = {0, 0, width, height};
   clearValues_.depth = fb_.profile().depthMax();
+  // GL's initial masks are all ones; held at the stencil width.
+  frag_.stencil.valueMask = frag_.stencil.writeMask = fb_.profile().stencilMax();
   lighting_.lights[0].diffuse = Vec4(1, 1, 1, 1);
   lighting_.lights[0].specular = Vec4(1, 1, 1, 1);
 }

@@ -142,6 +142,10 @@ class GLContext {
   PixelRect scissorBox() const { return scissorBox_; }
   bool scissorEnabled() const { return scissorEnabled_; }
   PixelRect viewportBox() const { return viewportBox_; }
+  GLenumValue cullFaceMode() const { return cullMode_; }
+  GLenumValue frontFaceMode() const { return frontFace_; }
+  bool flatShading() const { return flatShading_; }
+  std::array<double, 2> depthRangeValues() const { return {depthNear_, depthFar_}; }
 
   // Observes every fragment that reaches the per-fragment tests; costs nothing
   // when unset.

@@ -103,6 +103,7 @@ std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& ho
         if (hooks.onSnapshot) hooks.onSnapshot(cmd, gl);
         break;
       case ScriptCommand::Kind::Call: {
+        if (hooks.beforeCall) hooks.beforeCall(cmd);
         executeCall(gl, cmd);
         const std::uint32_t e = gl.getError();
         if (e != GL_NO_ERROR) {

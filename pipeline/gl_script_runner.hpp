@@ -11,6 +11,7 @@
 namespace mpr {
 
 struct ScriptHooks {
+  std::function<void(const ScriptCommand& call)> beforeCall;
   std::function<void(const ScriptCommand& pass)> onPass;
   std::function<void(const ScriptCommand& snapshot, const GLContext&)> onSnapshot;
   // A call GL rejected: the call had no effect and `error` is what glGetError returns.
