@@ -175,7 +175,7 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   const double exactArea = ex1 * ey2 - ex2 * ey1;
   const bool useSnapped = !(std::fabs(exactArea) > 0.0);  // degenerate before snapping
   const double snappedArea = static_cast<double>(area > 0 ? area : -area);  // the weights' sum
-  const double depthMax = static_cast<double>(fb_.profile().depthMax());
+  const float depthMaxF = static_cast<float>(fb_.profile().depthMax());
   const bool needColor = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] ||
                          frag_.colorMask[3] || frag_.alpha.enabled;
   const bool needDepth = frag_.depth.enabled;
@@ -195,12 +195,14 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     }
     Fragment f{x, y, 0, Rgba8{0, 0, 0, 0}, 0.0f};
     if (needDepth) {
-      // Depth is linear in window space; quantised to the profile's width by
-      // rounding to nearest, as llvmpipe converts to a 24-bit unorm buffer.
+      // Depth is linear in window space; quantised to the profile's width as
+      // llvmpipe converts to a unorm buffer: the float z times the float
+      // maximum, a single-precision product, rounded to nearest even.
       // (llvmpipe evaluates the depth plane in single precision, we in double:
-      // the two may differ by a unit.)
+      // on sloped planes the two may differ by a unit or so.)
       const double z = std::clamp(zWin[0] + b1 * (zWin[1] - zWin[0]) + b2 * (zWin[2] - zWin[0]), 0.0, 1.0);
-      f.depth = static_cast<std::uint32_t>(std::nearbyint(z * depthMax));
+      const float product = static_cast<float>(z) * depthMaxF;
+      f.depth = static_cast<std::uint32_t>(std::nearbyint(product));
     }
     if (needColor) {
       // Perspective-correct: interpolate attr/w and 1/w.

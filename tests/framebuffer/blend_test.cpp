@@ -22,31 +22,46 @@ namespace mpr {
 namespace {
 
 // ---------------------------------------------------------------------------
-// mulUnorm8 = round(a * b / 255)
+// mulUnorm8: llvmpipe's unorm8 product, round(a * b / 255) but for 24 pairs
 // ---------------------------------------------------------------------------
+
+// The pairs (a <= b) where llvmpipe's (t + (t >> 8) + 128) >> 8 is one below
+// round(ab/255): all have ab/255 = k + 128/255 = k + 0.50196, the closest a
+// product comes to a half from above. Measured on Mesa 22.3.6 llvmpipe
+// (169 * 212 blended to 140, not 141).
+struct LowPair { std::uint32_t a, b, value; };
+constexpr LowPair kLowPairs[] = {
+    {152, 229, 136}, {169, 212, 140}, {173, 241, 163}, {188, 196, 144},
+    {191, 253, 189}, {194, 232, 176}, {197, 244, 188}, {208, 236, 192},
+    {214, 227, 190}, {223, 251, 219}, {226, 233, 206}, {239, 247, 231}};
+
+bool isLowPair(std::uint32_t a, std::uint32_t b) {
+  for (const LowPair& p : kLowPairs)
+    if ((p.a == a && p.b == b) || (p.a == b && p.b == a)) return true;
+  return false;
+}
 
 // round(ab/255) = floor(ab/255 + 1/2) = floor((2ab + 255) / 510). There is
 // never a tie: ab/255 = k + 1/2 would need 2ab = 255 (2k + 1), even = odd.
-TEST(MulUnorm8, EqualsIntegerRoundingForAll65536Pairs) {
+TEST(MulUnorm8, EqualsIntegerRoundingExceptTheLowPairs) {
   int wrong = 0;
   for (std::uint32_t a = 0; a < 256; ++a)
     for (std::uint32_t b = 0; b < 256; ++b) {
-      const std::uint32_t want = (2 * a * b + 255) / 510;
+      const std::uint32_t rounded = (2 * a * b + 255) / 510;
+      const std::uint32_t want = isLowPair(a, b) ? rounded - 1 : rounded;
       if (mulUnorm8(a, b) != want && ++wrong <= 10)
         ADD_FAILURE() << a << " * " << b << ": expected " << want << ", got " << mulUnorm8(a, b);
     }
   EXPECT_EQ(wrong, 0);
 }
 
-// A second, independent route: the double quotient rounded half away from
-// zero (no tie can occur, see above, so the tie rule does not matter).
-TEST(MulUnorm8, EqualsDoubleRoundingForAll65536Pairs) {
-  int wrong = 0;
-  for (std::uint32_t a = 0; a < 256; ++a)
-    for (std::uint32_t b = 0; b < 256; ++b)
-      if (mulUnorm8(a, b) != static_cast<std::uint32_t>(std::lround(a * b / 255.0)) && ++wrong <= 10)
-        ADD_FAILURE() << a << " * " << b;
-  EXPECT_EQ(wrong, 0);
+TEST(MulUnorm8, LowPairsSitJustAboveAHalf) {
+  for (const LowPair& p : kLowPairs) {
+    EXPECT_EQ(mulUnorm8(p.a, p.b), p.value);
+    EXPECT_EQ(mulUnorm8(p.b, p.a), p.value);
+    EXPECT_EQ((p.a * p.b) % 255, 128u) << p.a << " * " << p.b;  // ab/255 = value + 128/255
+    EXPECT_EQ((p.a * p.b) / 255, p.value);
+  }
 }
 
 TEST(MulUnorm8, HandPickedNearHalves) {

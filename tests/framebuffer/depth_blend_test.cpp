@@ -53,12 +53,6 @@ TEST(DepthTest, MaskAndDisabledTestWriteNothing) {
   EXPECT_EQ(fb.depth(0, 0), 0u);
 }
 
-TEST(Blend, ProductsRoundExactlyForEveryPair) {
-  // round(a * b / 255) == floor((2ab + 255) / 510) for all bytes.
-  for (std::uint32_t a = 0; a < 256; ++a)
-    for (std::uint32_t b = 0; b < 256; ++b) ASSERT_EQ(mulUnorm8(a, b), (2 * a * b + 255) / 510) << a << "*" << b;
-}
-
 TEST(Blend, EveryFactorByHand) {
   const Rgba8 s{200, 100, 50, 128}, d{40, 80, 160, 64};
   // Source factor alone (destination ZERO): result = round(s * f / 255).
