@@ -80,7 +80,9 @@ void GLCommandStream::closePass() {
 
 void GLCommandStream::pass(const std::string& kind, const std::string& label) {
   closePass();
+  if (passEnd_ && !currentKind_.empty()) passEnd_(currentLabel_);
   currentKind_ = kind;
+  currentLabel_ = label;
   ++stats_[kind].passes;
   passStart_ = std::chrono::steady_clock::now();
   countersAtPassStart_ = gl_.counters();
@@ -90,6 +92,7 @@ void GLCommandStream::pass(const std::string& kind, const std::string& label) {
 
 void GLCommandStream::finish() {
   closePass();
+  if (passEnd_ && !currentKind_.empty()) passEnd_(currentLabel_);
   currentKind_.clear();
 }
 

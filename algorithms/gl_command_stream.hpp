@@ -6,6 +6,7 @@
 // to the same bytes.
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -42,6 +43,9 @@ class GLCommandStream {
   // Starts a pass: `kind` groups statistics ("ambient", "light"), `label` is the @pass line.
   void pass(const std::string& kind, const std::string& label);
   void finish();  // closes the last pass's timing
+  // Called with a pass's label when it ends (the next pass starts, or finish):
+  // tests and the stepper look at the buffers there.
+  void onPassEnd(std::function<void(const std::string& label)> f) { passEnd_ = std::move(f); }
 
   const std::string& trace() const { return trace_; }
   std::uint64_t glErrors() const { return glErrors_; }
@@ -56,7 +60,8 @@ class GLCommandStream {
   std::string trace_;
   std::uint64_t calls_ = 0, glErrors_ = 0;
   std::map<std::string, PassStatistics> stats_;
-  std::string currentKind_;
+  std::string currentKind_, currentLabel_;
+  std::function<void(const std::string&)> passEnd_;
   std::chrono::steady_clock::time_point passStart_;
   PipelineCounters countersAtPassStart_;
   std::uint64_t callsAtPassStart_ = 0;

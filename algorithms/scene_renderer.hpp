@@ -1,24 +1,29 @@
 #pragma once
-// Draws a scene through the emulated pipeline, every step a GL call on the
-// command stream. For now one ambient pass and one additive pass per light
-// with a depth-equal test (1997 paper, section 7.2: lights are added in RGB
-// space, the first pass ambient only); the multi-pass effects of the 1994
-// paper plug in as further passes.
+// Draws a scene through the emulated pipeline: the planner decides which
+// passes of the 1994 paper's Figure 4 the scene needs, and draw_window runs
+// them, every step a GL call on the command stream.
 #include <functional>
 #include <string>
 
+#include "algorithms/draw_window.hpp"
 #include "algorithms/gl_command_stream.hpp"
+#include "algorithms/render_plan.hpp"
 #include "scene/scene.hpp"
 
 namespace mpr {
 
 struct RenderProgress {
-  int pass = 0, passes = 0;
+  std::uint64_t views = 0, predictedViews = 0;
   std::string label;
 };
 
+struct RenderResult {
+  RenderPlan plan;
+  DrawWindowCounts counts;
+};
+
 // Renders `scene` on `stream` (whose context has the scene's size and profile).
-void renderScene(const Scene& scene, GLCommandStream& stream,
-                 const std::function<void(const RenderProgress&)>& progress = {});
+RenderResult renderScene(const Scene& scene, GLCommandStream& stream,
+                         const std::function<void(const RenderProgress&)>& progress = {}, bool cull = true);
 
 }  // namespace mpr

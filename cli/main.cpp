@@ -4,6 +4,7 @@
 
 #include "cli/conform_command.hpp"
 #include "cli/gl_command.hpp"
+#include "cli/info_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/step_command.hpp"
 
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   mpr::cli::addConformCommand(app, exitCode);
   mpr::cli::addRenderCommand(app, exitCode);
   mpr::cli::addStepCommand(app, exitCode);
+  mpr::cli::addInfoCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -24,16 +24,26 @@ struct RenderOptions {
   std::vector<std::string> sets;
   std::string dumpDir, traceFile, statsFile;
   bool describe = false;
+  bool noCull = false;
 };
 
-std::string statsJson(const GLCommandStream& s, const Scene& scene, double seconds) {
+std::string statsJson(const GLCommandStream& s, const Scene& scene, const RenderResult& r, double seconds) {
   std::ostringstream o;
   const PipelineCounters& c = const_cast<GLCommandStream&>(s).context().counters();
   o << "{\n  \"scene\": \"" << scene.file << "\",\n  \"width\": " << scene.render.width << ",\n  \"height\": "
     << scene.render.height << ",\n  \"seconds\": " << seconds << ",\n  \"gl_calls\": " << s.calls()
     << ",\n  \"gl_errors\": " << s.glErrors() << ",\n  \"scene_triangles\": " << scene.triangleCount()
     << ",\n  \"triangles\": " << c.triangles << ",\n  \"fragments_tested\": " << c.fragmentsTested
-    << ",\n  \"fragments_written\": " << c.fragmentsWritten << ",\n  \"passes\": {";
+    << ",\n  \"fragments_written\": " << c.fragmentsWritten;
+  // The recursion's own counts beside the planner's predictions (mpr info).
+  o << ",\n  \"views\": " << r.counts.views << ",\n  \"predicted_views\": " << r.plan.predictedViews()
+    << ",\n  \"views_per_level\": [";
+  for (std::size_t l = 0; l < r.counts.viewsAtLevel.size(); ++l) o << (l ? ", " : "") << r.counts.viewsAtLevel[l];
+  o << "],\n  \"light_passes\": " << r.counts.lightPasses << ",\n  \"predicted_light_passes\": "
+    << r.plan.predictedLightPasses() << ",\n  \"shadow_passes\": " << r.counts.shadowPasses
+    << ",\n  \"predicted_shadow_passes\": " << r.plan.predictedShadowPasses()
+    << ",\n  \"faces_culled\": " << r.counts.facesSkipped << ",\n  \"zfail_volumes\": " << r.counts.zfailVolumes
+    << ",\n  \"passes\": {";
   bool first = true;
   for (const auto& [kind, p] : s.passStatistics()) {
     o << (first ? "\n" : ",\n") << "    \"" << kind << "\": {\"count\": " << p.passes << ", \"gl_calls\": " << p.calls
@@ -75,9 +85,10 @@ int runRender(const RenderOptions& o) {
   GLCommandStream stream(*gl, !o.traceFile.empty());
   const bool tty = isatty(2);
   const auto t0 = std::chrono::steady_clock::now();
-  renderScene(scene, stream, [&](const RenderProgress& p) {
-    if (tty) std::cerr << "\rrender: pass " << p.pass << "/" << p.passes << " (" << p.label << ")   " << std::flush;
-  });
+  const RenderResult result = renderScene(scene, stream, [&](const RenderProgress& p) {
+    if (tty) std::cerr << "\rrender: view " << p.views << " of at most " << p.predictedViews << "   " << std::flush;
+  }, !o.noCull);
+  for (const std::string& w : result.counts.warnings) std::cerr << scene.file << ": warning: " << w << "\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
   try {
@@ -90,7 +101,7 @@ int runRender(const RenderOptions& o) {
         writeFileAtomically((std::filesystem::path(o.dumpDir) / (nb.name + ".npy")).string(), nb.bytes);
     }
     if (!o.traceFile.empty()) writeFileAtomically(o.traceFile, stream.trace());
-    if (!o.statsFile.empty()) writeFileAtomically(o.statsFile, statsJson(stream, scene, seconds));
+    if (!o.statsFile.empty()) writeFileAtomically(o.statsFile, statsJson(stream, scene, result, seconds));
   } catch (const std::exception& e) {
     std::cerr << "mpr render: " << e.what() << "\n";
     return 1;
@@ -117,6 +128,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   c->add_option("--dump", o->dumpDir, "also write the final buffers as .npy files into this folder");
   c->add_option("--trace", o->traceFile, "write the GL calls executed as a GL script (.gls)");
   c->add_option("--stats", o->statsFile, "write statistics as JSON: passes by kind, calls, triangles, fragments, time");
+  c->add_flag("--no-cull", o->noCull, "recurse into every mirror face, even those seen from behind or hidden");
   c->add_flag("--describe-format", o->describe, "print a JSON Schema-like description of the scene format");
   c->callback([o, &exitCode] { exitCode = runRender(*o); });
 }

@@ -48,7 +48,11 @@ Mesh makeSphere(int slices, int stacks) {
     const float phi = v * kPi;
     for (int i = 0; i <= slices; ++i) {
       const float theta = static_cast<float>(i) / static_cast<float>(slices) * 2.0f * kPi;
-      const Vec3 p(std::sin(phi) * std::cos(theta), std::cos(phi), -std::sin(phi) * std::sin(theta));
+      Vec3 p(std::sin(phi) * std::cos(theta), std::cos(phi), -std::sin(phi) * std::sin(theta));
+      // The poles and the seam repeat exactly the same point, so the mesh
+      // welds closed (shadow volumes need a closed silhouette).
+      if (j == 0 || j == stacks) p = Vec3(0.0f, j == 0 ? 1.0f : -1.0f, 0.0f);
+      else if (i == slices) p = m.positions[m.positions.size() - static_cast<std::size_t>(slices)];
       m.positions.push_back(p);
       m.normals.push_back(p);
     }
@@ -68,7 +72,8 @@ Mesh makeCylinder(int slices) {
   Mesh m;
   for (int i = 0; i < slices; ++i) {
     const float a0 = static_cast<float>(i) / static_cast<float>(slices) * 2.0f * kPi;
-    const float a1 = static_cast<float>(i + 1) / static_cast<float>(slices) * 2.0f * kPi;
+    // The last side ends exactly where the first begins (a closed mesh).
+    const float a1 = i + 1 == slices ? 0.0f : static_cast<float>(i + 1) / static_cast<float>(slices) * 2.0f * kPi;
     const Vec3 p0(std::cos(a0), 0, -std::sin(a0)), p1(std::cos(a1), 0, -std::sin(a1));
     const auto base = static_cast<std::uint32_t>(m.positions.size());
     for (const Vec3& p : {p0, p1}) {

@@ -58,6 +58,7 @@ struct SceneObject {
   std::string name;
   Mesh mesh;          // world space
   int material = 0;   // index into Scene::materials
+  bool castsShadows = true;  // a shadow volume per light (quads and planes default to false)
   int line = 0;       // where the object is defined, for messages
 };
 

@@ -64,6 +64,7 @@ const std::vector<KeySpec> kObjectKeys = {
     {"subdivisions", "integer >= 1", "sphere slices (stacks are half), cylinder slices, plane divisions"},
     {"translate", "vec3", "applied last"}, {"rotate", "[degrees, x, y, z]", "applied after scale"},
     {"scale", "number or vec3", "applied first"}, {"material", "name", "a key of `materials`"},
+    {"casts_shadows", "bool", "gets a shadow volume; default true, false for quad and plane"},
 };
 const std::vector<KeySpec> kRenderKeys = {
     {"width", "integer", "image width, default 640"}, {"height", "integer", "image height, default 480"},
@@ -304,8 +305,8 @@ class Loader {
       if (p == "box") o.mesh = makeBox();
       else if (p == "sphere") o.mesh = makeSphere(sub ? sub : 32, sub ? std::max(2, sub / 2) : 16);
       else if (p == "cylinder") o.mesh = makeCylinder(sub ? std::max(3, sub) : 32);
-      else if (p == "quad") o.mesh = makeQuad();
-      else if (p == "plane") o.mesh = makePlane(sub ? sub : 1);
+      else if (p == "quad") o.mesh = makeQuad(), o.castsShadows = false;
+      else if (p == "plane") o.mesh = makePlane(sub ? sub : 1), o.castsShadows = false;
       else fail(n["primitive"], where + " primitive must be box, sphere, cylinder, quad or plane, not '" + p + "'");
     } else {
       const std::string rel = string(n["mesh"], where + " mesh");
@@ -347,6 +348,7 @@ class Loader {
       }
       o.material = it->second;
     }
+    if (n["casts_shadows"]) o.castsShadows = boolean(n["casts_shadows"], where + " casts_shadows");
     if (s.materials[static_cast<std::size_t>(o.material)].specularKind()) checkPlanarFaces(n, o, where);
     return o;
   }

@@ -28,5 +28,5 @@ out="$("$MPR" step "$script" --state 3)" || fail "state failed"
 "$MPR" step "$script" --pixel 1 >/dev/null 2>&1; [[ $? -eq 2 ]] || fail "malformed --pixel should exit 2"
 # A scene steps through its render's GL calls.
 out="$("$MPR" step "$SRC/scenes/default.yaml")" || fail "scene pass list failed"
-[[ "$out" == *"pass 1 (line "*"): ambient: every object lit by the scene ambient only"* ]] || fail "scene passes: $out"
+[[ "$out" == *"pass 2 (line "*"): draw_window level 0 > ambient | draw_normal_objects(Camera, ZERO)"* ]] || fail "scene passes: $out"
 finish

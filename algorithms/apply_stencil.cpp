@@ -1,0 +1,69 @@
+#include "algorithms/apply_stencil.hpp"
+
+#include <stdexcept>
+
+namespace mpr {
+
+GLStencilSetting translateStencil(const PaperStencil& s, const StencilLevels& l) {
+  if (s.compare == PaperCompare::Equal) {
+    if (s.pass == PaperPass::Keep) return {"GL_EQUAL", s.compareValue, l.max, l.max, "GL_KEEP"};
+    // INVERT through the mask A ^ B turns A into B and touches nothing else:
+    // only pixels holding A pass the test.
+    return {"GL_EQUAL", s.compareValue, l.max, s.compareValue ^ s.passValue, "GL_INVERT"};
+  }
+  if (s.compare == PaperCompare::Greater && s.compareValue == l.shadMin && s.pass == PaperPass::Replace) {
+    if (s.passValue == l.zero) return {"GL_LESS", l.shadMin, l.max, l.max, "GL_ZERO"};
+    if (s.passValue == l.shadZero)
+      return {"GL_LEQUAL", l.shadZero, l.shadMin, l.max, "GL_REPLACE"};
+  }
+  throw std::logic_error("stencil notation not used by Figure 4: " + paperStencilText(s, l));
+}
+
+namespace {
+
+std::string valueName(std::uint32_t v, const StencilLevels& l) {
+  if (v == l.shadZero) return "SHAD_ZERO";
+  if (v == l.shadMin) return "SHAD_MIN";
+  if (v == l.zero) return "ZERO";
+  return std::to_string(v);
+}
+
+}  // namespace
+
+std::string paperStencilText(const PaperStencil& s, const StencilLevels& l) {
+  return std::string(s.compare == PaperCompare::Equal ? "EQUAL, " : "GREATER, ") + valueName(s.compareValue, l) +
+         (s.pass == PaperPass::Keep ? ", KEEP, " : ", REPLACE, ") + valueName(s.passValue, l);
+}
+
+void stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l) {
+  const GLStencilSetting g = translateStencil(s, l);
+  gl.call(GLCall::StencilFunc, {g.func, static_cast<int>(g.ref), static_cast<int>(g.valueMask)});
+  gl.call(GLCall::StencilMask, {static_cast<int>(g.writeMask)});
+  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", g.zpass});
+}
+
+void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l) {
+  stencil(gl, s, l);
+  gl.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
+  gl.call(GLCall::DepthMask, {"GL_FALSE"});
+  gl.call(GLCall::Disable, {"GL_DEPTH_TEST"});
+  gl.call(GLCall::Disable, {"GL_LIGHTING"});
+  gl.call(GLCall::Disable, {"GL_FOG"});
+  gl.call(GLCall::Disable, {"GL_CULL_FACE"});
+  gl.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
+  gl.call(GLCall::MatrixMode, {"GL_PROJECTION"});
+  gl.call(GLCall::PushMatrix, {});
+  gl.call(GLCall::LoadIdentity, {});
+  gl.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
+  gl.call(GLCall::PushMatrix, {});
+  gl.call(GLCall::LoadIdentity, {});
+  gl.call(GLCall::Rectf, {-1.0f, -1.0f, 1.0f, 1.0f});
+  gl.call(GLCall::PopMatrix, {});
+  gl.call(GLCall::MatrixMode, {"GL_PROJECTION"});
+  gl.call(GLCall::PopMatrix, {});
+  gl.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
+  gl.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
+  gl.call(GLCall::DepthMask, {"GL_TRUE"});
+}
+
+}  // namespace mpr

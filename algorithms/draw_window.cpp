@@ -1,0 +1,410 @@
+// Figure 4 of Diefenbach & Badler 1994, routine by routine. The paper's
+// pseudo-code is quoted in each pass label (after " | ") so the stepper and
+// the trace show which line a pass runs.
+//
+// Decisions the paper leaves open (README, "The 1994 algorithm"):
+// - Mirror depth: after draw_face marks a face's pixels with ZERO, those
+//   pixels get depth = far and the clear colour (a quad at the far plane,
+//   depth ALWAYS, under the stencil mask), so the virtual scene behind the
+//   mirror can be drawn there; after the recursion the face is drawn again
+//   with depth ALWAYS, which puts its own depth back for the faces drawn
+//   after it, and blends its lit colour over the reflection through
+//   destination alpha (the paper's "two additional renderings").
+// - Virtual views clip at the face's plane (user clip plane 0) and flip the
+//   winding (glFrontFace(GL_CW) under an odd number of reflections).
+// - Lights are added one pass each, depth EQUAL, blend ONE ONE (1997 §7.2).
+#include "algorithms/draw_window.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "algorithms/apply_stencil.hpp"
+#include "algorithms/ref_face.hpp"
+#include "algorithms/shadow_pass.hpp"
+#include "algorithms/view_camera.hpp"
+
+namespace mpr {
+namespace {
+
+constexpr int kMaxGLLights = 8;
+
+class WindowRenderer {
+ public:
+  WindowRenderer(const Scene& s, const RenderPlan& p, GLCommandStream& gl,
+                 const std::function<void(const DrawWindowProgress&)>& progress)
+      : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
+        shadows_(s, p) {
+    counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
+  }
+
+  DrawWindowCounts run() {
+    path_ = {};
+    pass("clear", "clear | clear every buffer");
+    gl_.call(GLCall::Disable, {"GL_DITHER"});
+    gl_.call(GLCall::ClearColor, {0.0f, 0.0f, 0.0f, 1.0f});
+    gl_.call(GLCall::ClearDepth, {1.0});
+    gl_.call(GLCall::ClearStencil, {0});
+    gl_.call(GLCall::Clear, {"GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT|GL_STENCIL_BUFFER_BIT"});
+    gl_.call(GLCall::Viewport, {0, 0, s_.render.width, s_.render.height});
+    if (usesStencil()) gl_.call(GLCall::Enable, {"GL_STENCIL_TEST"});
+    draw_window(ViewCamera{});
+    gl_.call(GLCall::Disable, {"GL_BLEND"});
+    if (usesStencil()) gl_.call(GLCall::Disable, {"GL_STENCIL_TEST"});
+    if (plan_.reflections) {
+      gl_.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
+      gl_.call(GLCall::FrontFace, {"GL_CCW"});
+    }
+    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
+    gl_.call(GLCall::DepthFunc, {"GL_LESS"});
+    gl_.finish();
+    counts_.warnings.insert(counts_.warnings.begin(), shadows_.warnings().begin(), shadows_.warnings().end());
+    return counts_;
+  }
+
+ private:
+  bool usesStencil() const { return plan_.shadows || plan_.reflections; }
+
+  // Starts a pass labelled with the routine path and the pseudo-code line.
+  void pass(const std::string& kind, const std::string& what) {
+    std::string label;
+    for (const std::string& p : path_) label += p + " > ";
+    label += what;
+    gl_.pass(kind, label);
+  }
+
+  // ---- drawwindow(Camera) -------------------------------------------------
+  void draw_window(const ViewCamera& cam) {
+    ++counts_.views;
+    ++counts_.viewsAtLevel[static_cast<std::size_t>(cam.level)];
+    if (progress_) progress_({counts_.views, "view " + std::to_string(counts_.views)});
+    path_.push_back("draw_window level " + std::to_string(cam.level));
+    const std::uint32_t zero = lv_.zero;
+    const bool shadowsHere = plan_.shadows && cam.level <= plan_.shadowDepth;
+
+    pass("ambient", "ambient | draw_normal_objects(Camera, ZERO)  // ambient only");
+    draw_normal_objects(cam, zero, -1);
+    for (int light = 0; light < static_cast<int>(s_.lights.size()); ++light) {
+      path_.push_back("light " + std::to_string(light));
+      if (shadowsHere) {
+        pass("apply_stencil", "render area to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)");
+        apply_stencil(gl_, {PaperCompare::Equal, zero, PaperPass::Replace, lv_.shadZero}, lv_);
+        draw_all_shadows(cam, light);
+        pass("apply_stencil", "back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)");
+        apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, zero}, lv_);
+      } else {
+        pass("light", "lit | draw_normal_objects(Camera, ZERO)  // light " + std::to_string(light) + " added");
+        draw_normal_objects(cam, zero, light);
+      }
+      path_.pop_back();
+    }
+    if (plan_.reflections && cam.level < plan_.recursionDepth) draw_ref_objects(cam, cam.level + 1);
+    path_.pop_back();
+  }
+
+  // ---- draw_all_shadows() -------------------------------------------------
+  void draw_all_shadows(const ViewCamera& cam, int light) {
+    path_.push_back("draw_all_shadows");
+    pass("shadow volume", "shadow volumes | make_all_shadows(ALWAYS)");
+    ++counts_.shadowPasses;
+    setupView(cam);
+    counts_.zfailVolumes += shadows_.drawVolumes(gl_, light, cam, s_.camera, lv_);
+    // More nested volumes than SHAD_ZERO..max can count saturate at max (INCR
+    // clamps); find such pixels with a stencil-only pass the fragment counter
+    // measures (an occlusion query's part) and report them.
+    pass("shadow check", "count check | apply_stencil(EQUAL, max, KEEP, max)  // saturated counts?");
+    const std::uint64_t before = gl_.context().counters().fragmentsWritten;
+    apply_stencil(gl_, {PaperCompare::Equal, lv_.max, PaperPass::Keep, lv_.max}, lv_);
+    const std::uint64_t saturated = gl_.context().counters().fragmentsWritten - before;
+    if (saturated > 0)
+      counts_.warnings.push_back(std::to_string(saturated) + " pixels of view " + std::to_string(counts_.views) +
+                                 ", light " + std::to_string(light) + " are inside " +
+                                 std::to_string(lv_.maxShadowDepthAbove()) +
+                                 " or more shadow volumes, as many as the stencil bits above SHAD_ZERO count: "
+                                 "their shadow may be wrong");
+    pass("light", "lit outside the shadows | draw_normal_objects(Camera, SHAD_ZERO)");
+    draw_normal_objects(cam, lv_.shadZero, light);
+    pass("apply_stencil", "reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
+    apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, lv_.shadZero}, lv_);
+    path_.pop_back();
+  }
+
+  // ---- draw_ref_objects(Camera) -------------------------------------------
+  void draw_ref_objects(const ViewCamera& cam, int refLevel) {
+    const std::uint32_t level = static_cast<std::uint32_t>(refLevel);
+    path_.push_back("draw_ref_objects level " + std::to_string(refLevel));
+    if (refLevel == 1) {
+      pass("apply_stencil", "clear | clear_stencil(ZERO)");
+      gl_.call(GLCall::Clear, {"GL_STENCIL_BUFFER_BIT"});
+    }
+    pass("apply_stencil", "render area to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)");
+    apply_stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Replace, level}, lv_);
+    const DVec3 eye = cam.eye(s_.camera);
+    for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
+      const RefFace& face = faces_[static_cast<std::size_t>(f)];
+      if (f == cam.throughFace) continue;  // a planar face cannot see itself (eq. 5: n - 1)
+      // Faces seen from behind show nothing (culling on).
+      if (plan_.cull && !(face.side(eye) > 0.0)) {
+        ++counts_.facesSkipped;
+        continue;
+      }
+      const SceneObject& obj = s_.objects[static_cast<std::size_t>(face.object)];
+      path_.push_back("face " + std::to_string(f) + " \"" + obj.name + "\"");
+      pass("ref face", "mask the face | stencil(EQUAL, REF_LEVEL, REPLACE, ZERO); draw_face(ref_face)");
+      stencil(gl_, {PaperCompare::Equal, level, PaperPass::Replace, lv_.zero}, lv_);
+      const std::uint64_t written = gl_.context().counters().fragmentsWritten;
+      drawFaceMask(cam, face);
+      // No pixel of the face survived the depth and stencil tests: nothing
+      // to reflect (culling on; the counter plays an occlusion query's part).
+      if (plan_.cull && gl_.context().counters().fragmentsWritten == written) {
+        ++counts_.facesSkipped;
+        path_.pop_back();
+        continue;
+      }
+      pass("ref face", "depth to far inside the mask | (the paper is silent: clear the face's pixels)");
+      clearMaskToFar();
+      draw_window(refCamera(cam, face, f, refLevel));
+      pass("ref face", "blend the face's own colour | two renderings through destination alpha");
+      finishFace(cam, face);
+      pass("apply_stencil", "face back to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)");
+      apply_stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Replace, level}, lv_);
+      path_.pop_back();
+    }
+    pass("apply_stencil", "level done | apply_stencil(EQUAL, REF_LEVEL, REPLACE, ZERO)");
+    apply_stencil(gl_, {PaperCompare::Equal, level, PaperPass::Replace, lv_.zero}, lv_);
+    path_.pop_back();
+  }
+
+  // The mirror's virtual camera: the view reflected through the face's plane,
+  // clipped at that plane so that nothing behind the mirror shows.
+  ViewCamera refCamera(const ViewCamera& cam, const RefFace& face, int f, int level) const {
+    ViewCamera v;
+    v.world = cam.world * reflectionMatrix(face.normal, face.offset);
+    v.mirrored = !cam.mirrored;
+    v.clip = true;
+    v.clipPlane = DVec4(face.normal, -face.offset);
+    v.throughFace = f;
+    v.level = level;
+    return v;
+  }
+
+  // ---- draw_normal_objects(Camera, STEN_VALUE) ----------------------------
+  // light < 0: the ambient pass (depth LEQUAL, writes depth); otherwise light
+  // `light` alone, added where depth is EQUAL (1997 §7.2).
+  void draw_normal_objects(const ViewCamera& cam, std::uint32_t stenValue, int light) {
+    if (usesStencil()) stencil(gl_, {PaperCompare::Equal, stenValue, PaperPass::Keep, stenValue}, lv_);
+    setupView(cam);
+    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
+    gl_.call(GLCall::Enable, {"GL_CULL_FACE"});
+    gl_.call(GLCall::Enable, {"GL_LIGHTING"});
+    if (light < 0) {
+      gl_.call(GLCall::DepthFunc, {"GL_LEQUAL"});
+      gl_.call(GLCall::DepthMask, {"GL_TRUE"});
+      gl_.call(GLCall::Disable, {"GL_BLEND"});
+      gl_.call(GLCall::Disable, {"GL_LIGHT0"});
+      gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f});
+    } else {
+      gl_.call(GLCall::DepthFunc, {"GL_EQUAL"});
+      gl_.call(GLCall::DepthMask, {"GL_FALSE"});
+      gl_.call(GLCall::Enable, {"GL_BLEND"});
+      gl_.call(GLCall::BlendFunc, {"GL_ONE", "GL_ONE"});
+      gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", 0.0f, 0.0f, 0.0f, 1.0f});
+      gl_.call(GLCall::Enable, {"GL_LIGHT0"});
+      setLight(0, s_.lights[static_cast<std::size_t>(light)]);
+    }
+    for (const SceneObject& o : s_.objects) {
+      const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
+      if (isRefMaterial(m)) continue;  // "for (each non_ref object)"
+      setMaterial(m, light < 0);
+      drawTriangles(o.mesh);
+    }
+    if (light >= 0) ++counts_.lightPasses;
+  }
+
+  // The view of `cam`: projection, modelview = lookAt * world, winding, clip plane.
+  void setupView(const ViewCamera& cam) {
+    const Camera& c = s_.camera;
+    gl_.call(GLCall::MatrixMode, {"GL_PROJECTION"});
+    gl_.call(GLCall::LoadIdentity, {});
+    gl_.call(GLCall::Perspective, {static_cast<double>(c.fovY),
+                                   static_cast<double>(s_.render.width) / static_cast<double>(s_.render.height),
+                                   static_cast<double>(c.near), static_cast<double>(c.far)});
+    gl_.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
+    gl_.call(GLCall::LoadIdentity, {});
+    gl_.call(GLCall::LookAt, {static_cast<double>(c.position.x), static_cast<double>(c.position.y),
+                              static_cast<double>(c.position.z), static_cast<double>(c.lookAt.x),
+                              static_cast<double>(c.lookAt.y), static_cast<double>(c.lookAt.z),
+                              static_cast<double>(c.up.x), static_cast<double>(c.up.y),
+                              static_cast<double>(c.up.z)});
+    if (cam.level > 0) {
+      const DMat4& w = cam.world;
+      gl_.call(GLCall::MultMatrixd, {w[0][0], w[0][1], w[0][2], w[0][3], w[1][0], w[1][1], w[1][2], w[1][3],
+                                     w[2][0], w[2][1], w[2][2], w[2][3], w[3][0], w[3][1], w[3][2], w[3][3]});
+    }
+    gl_.call(GLCall::FrontFace, {cam.mirrored ? "GL_CW" : "GL_CCW"});
+    if (cam.clip) {
+      // The plane is given in the coordinates geometry is drawn in (the real
+      // scene's), so GL transforms it into the virtual view with the modelview.
+      gl_.call(GLCall::ClipPlane, {"GL_CLIP_PLANE0", cam.clipPlane.x, cam.clipPlane.y, cam.clipPlane.z,
+                                   cam.clipPlane.w});
+      gl_.call(GLCall::Enable, {"GL_CLIP_PLANE0"});
+    } else if (usesStencil()) {
+      gl_.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
+    }
+  }
+
+  void setLight(int index, const PointLight& l) {
+    const std::string_view n = lightName(index);
+    gl_.call(GLCall::Lightfv, {n, "GL_POSITION", l.position.x, l.position.y, l.position.z, 1.0f});
+    gl_.call(GLCall::Lightfv, {n, "GL_DIFFUSE", l.color.x, l.color.y, l.color.z, 1.0f});
+    gl_.call(GLCall::Lightfv, {n, "GL_SPECULAR", l.color.x, l.color.y, l.color.z, 1.0f});
+    gl_.call(GLCall::Lightf, {n, "GL_CONSTANT_ATTENUATION", l.attenuation.x});
+    gl_.call(GLCall::Lightf, {n, "GL_LINEAR_ATTENUATION", l.attenuation.y});
+    gl_.call(GLCall::Lightf, {n, "GL_QUADRATIC_ATTENUATION", l.attenuation.z});
+  }
+
+  static std::string_view lightName(int i) {
+    static constexpr std::string_view names[kMaxGLLights] = {"GL_LIGHT0", "GL_LIGHT1", "GL_LIGHT2", "GL_LIGHT3",
+                                                             "GL_LIGHT4", "GL_LIGHT5", "GL_LIGHT6", "GL_LIGHT7"};
+    return names[i];
+  }
+
+  void setMaterial(const SceneMaterial& m, bool ambientPass) {
+    const Vec3 d = m.diffuse;
+    // The ambient pass carries ambient and emission; light passes diffuse and specular.
+    if (ambientPass) {
+      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", d.x, d.y, d.z, 1.0f});
+      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", 0.0f, 0.0f, 0.0f, 1.0f});
+      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_SPECULAR", 0.0f, 0.0f, 0.0f, 1.0f});
+      gl_.call(GLCall::Materialfv,
+               {"GL_FRONT_AND_BACK", "GL_EMISSION", m.emission.x, m.emission.y, m.emission.z, 1.0f});
+    } else {
+      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", 0.0f, 0.0f, 0.0f, 1.0f});
+      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", d.x, d.y, d.z, 1.0f});
+      gl_.call(GLCall::Materialfv,
+               {"GL_FRONT_AND_BACK", "GL_SPECULAR", m.specular.x, m.specular.y, m.specular.z, 1.0f});
+      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_EMISSION", 0.0f, 0.0f, 0.0f, 1.0f});
+      gl_.call(GLCall::Materialf, {"GL_FRONT_AND_BACK", "GL_SHININESS", m.shininess});
+    }
+  }
+
+  void drawTriangles(const Mesh& mesh) {
+    gl_.call(GLCall::Begin, {"GL_TRIANGLES"});
+    for (const auto& t : mesh.triangles)
+      for (std::uint32_t v : t) {
+        const Vec3 n = mesh.normals[v], p = mesh.positions[v];
+        gl_.call(GLCall::Normal3f, {n.x, n.y, n.z});
+        gl_.call(GLCall::Vertex3f, {p.x, p.y, p.z});
+      }
+    gl_.call(GLCall::End, {});
+  }
+
+  void drawPolygon(const RefFace& face, bool withNormal) {
+    gl_.call(GLCall::Begin, {"GL_POLYGON"});
+    for (const Vec3& p : face.polygon) {
+      if (withNormal)
+        gl_.call(GLCall::Normal3f, {static_cast<float>(face.normal.x), static_cast<float>(face.normal.y),
+                                    static_cast<float>(face.normal.z)});
+      gl_.call(GLCall::Vertex3f, {p.x, p.y, p.z});
+    }
+    gl_.call(GLCall::End, {});
+  }
+
+  // draw_face(ref_face): the face's visible pixels (depth test, no colour or
+  // depth writes) take the stencil op set by the caller.
+  void drawFaceMask(const ViewCamera& cam, const RefFace& face) {
+    setupView(cam);
+    gl_.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
+    gl_.call(GLCall::DepthMask, {"GL_FALSE"});
+    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
+    gl_.call(GLCall::DepthFunc, {"GL_LEQUAL"});
+    gl_.call(GLCall::Enable, {"GL_CULL_FACE"});
+    gl_.call(GLCall::Disable, {"GL_LIGHTING"});
+    gl_.call(GLCall::Disable, {"GL_BLEND"});
+    drawPolygon(face, false);
+    gl_.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
+    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
+  }
+
+  // Inside the face's mask (stencil ZERO): clear colour and depth = far, so
+  // the virtual scene can be drawn there with the depth test.
+  void clearMaskToFar() {
+    stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
+    gl_.call(GLCall::Disable, {"GL_LIGHTING"});
+    gl_.call(GLCall::Disable, {"GL_BLEND"});
+    gl_.call(GLCall::Disable, {"GL_CULL_FACE"});
+    gl_.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
+    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
+    gl_.call(GLCall::DepthFunc, {"GL_ALWAYS"});
+    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
+    gl_.call(GLCall::MatrixMode, {"GL_PROJECTION"});
+    gl_.call(GLCall::LoadIdentity, {});
+    gl_.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
+    gl_.call(GLCall::LoadIdentity, {});
+    gl_.call(GLCall::Color4f, {0.0f, 0.0f, 0.0f, 1.0f});
+    gl_.call(GLCall::Begin, {"GL_QUADS"});
+    gl_.call(GLCall::Vertex3f, {-1.0f, -1.0f, 1.0f});
+    gl_.call(GLCall::Vertex3f, {1.0f, -1.0f, 1.0f});
+    gl_.call(GLCall::Vertex3f, {1.0f, 1.0f, 1.0f});
+    gl_.call(GLCall::Vertex3f, {-1.0f, 1.0f, 1.0f});
+    gl_.call(GLCall::End, {});
+  }
+
+  // After the reflection is drawn in the face's mask (still ZERO): first
+  // rendering writes destination alpha = 1 - reflectance, no colour; second
+  // draws the face lit (ambient and up to eight lights at once) blended as
+  // lit * dst_alpha + reflection * (1 - dst_alpha). Depth ALWAYS puts the
+  // face's own depth back. (1994 paper, "Object attributes and translucency".)
+  void finishFace(const ViewCamera& cam, const RefFace& face) {
+    const SceneMaterial& m = s_.materials[static_cast<std::size_t>(s_.objects[static_cast<std::size_t>(face.object)].material)];
+    stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
+    setupView(cam);
+    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
+    gl_.call(GLCall::DepthFunc, {"GL_ALWAYS"});
+    gl_.call(GLCall::Enable, {"GL_CULL_FACE"});
+    gl_.call(GLCall::Disable, {"GL_LIGHTING"});
+    gl_.call(GLCall::Disable, {"GL_BLEND"});
+    gl_.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_TRUE"});
+    gl_.call(GLCall::DepthMask, {"GL_FALSE"});
+    gl_.call(GLCall::Color4f, {0.0f, 0.0f, 0.0f, 1.0f - m.reflectance});
+    drawPolygon(face, false);
+    gl_.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
+    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
+    gl_.call(GLCall::Enable, {"GL_BLEND"});
+    gl_.call(GLCall::BlendFunc, {"GL_DST_ALPHA", "GL_ONE_MINUS_DST_ALPHA"});
+    gl_.call(GLCall::Enable, {"GL_LIGHTING"});
+    gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f});
+    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
+    for (int i = 0; i < lights; ++i) {
+      gl_.call(GLCall::Enable, {lightName(i)});
+      setLight(i, s_.lights[static_cast<std::size_t>(i)]);
+    }
+    const Vec3 d = m.diffuse;
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", d.x, d.y, d.z, 1.0f});
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", d.x, d.y, d.z, 1.0f});
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_SPECULAR", m.specular.x, m.specular.y, m.specular.z, 1.0f});
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_EMISSION", m.emission.x, m.emission.y, m.emission.z, 1.0f});
+    gl_.call(GLCall::Materialf, {"GL_FRONT_AND_BACK", "GL_SHININESS", m.shininess});
+    drawPolygon(face, true);
+    for (int i = 1; i < lights; ++i) gl_.call(GLCall::Disable, {lightName(i)});
+    gl_.call(GLCall::Disable, {"GL_BLEND"});
+  }
+
+  const Scene& s_;
+  const RenderPlan& plan_;
+  GLCommandStream& gl_;
+  StencilLevels lv_;
+  std::function<void(const DrawWindowProgress&)> progress_;
+  std::vector<RefFace> faces_;
+  ShadowPass shadows_;
+  std::vector<std::string> path_;
+  DrawWindowCounts counts_;
+};
+
+}  // namespace
+
+DrawWindowCounts drawScene(const Scene& scene, const RenderPlan& plan, GLCommandStream& gl,
+                           const std::function<void(const DrawWindowProgress&)>& progress) {
+  return WindowRenderer(scene, plan, gl, progress).run();
+}
+
+}  // namespace mpr

@@ -1,0 +1,32 @@
+#pragma once
+// The specular faces of a scene (the 1994 paper's "ref faces"): every polygon
+// of an object whose material is a mirror or refracts, with its plane.
+#include <vector>
+
+#include "algorithms/view_camera.hpp"
+#include "scene/scene.hpp"
+
+namespace mpr {
+
+struct RefFace {
+  int object = 0;              // index into Scene::objects
+  std::vector<Vec3> polygon;   // world space, counter-clockwise seen from the front
+  DVec3 normal{0.0};           // unit, pointing to the front (the side that reflects)
+  double offset = 0.0;         // the plane: dot(normal, x) = offset
+  DVec3 centre{0.0};
+  MaterialKind kind = MaterialKind::Mirror;
+
+  // > 0 in front of the face, < 0 behind it.
+  double side(DVec3 p) const { return glm::dot(normal, p) - offset; }
+};
+
+// The materials whose faces the recursion looks through. Refraction,
+// translucency and frosted glass are drawn as their diffuse colour until
+// their passes land.
+inline bool isRefMaterial(const SceneMaterial& m) { return m.kind == MaterialKind::Mirror; }
+
+// Every polygon of every ref object, in scene order (Newell normals; the
+// loader has already refused non-planar and zero-area specular faces).
+std::vector<RefFace> findRefFaces(const Scene& scene);
+
+}  // namespace mpr

@@ -1,0 +1,100 @@
+#include "algorithms/render_plan.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "framebuffer/profile.hpp"
+
+namespace mpr {
+
+std::uint64_t RenderPlan::predictedViewsAtLevel(int level) const {
+  if (level == 0) return 1;
+  if (!reflections || level > recursionDepth) return 0;
+  // 1994 eq. (5): n (n - 1)^(d - 1) renderings at depth d; a planar face
+  // never sees itself, so each view recurses into the other n - 1 faces.
+  std::uint64_t v = static_cast<std::uint64_t>(refFaces);
+  for (int k = 1; k < level; ++k) v *= static_cast<std::uint64_t>(refFaces - 1);
+  return v;
+}
+
+std::uint64_t RenderPlan::predictedViews() const {
+  std::uint64_t total = 0;
+  for (int l = 0; l <= recursionDepth; ++l) total += predictedViewsAtLevel(l);
+  return total;
+}
+
+std::uint64_t RenderPlan::predictedShadowPasses() const {
+  if (!shadows) return 0;
+  std::uint64_t views = 0;
+  for (int l = 0; l <= std::min(shadowDepth, recursionDepth); ++l) views += predictedViewsAtLevel(l);
+  return views * static_cast<std::uint64_t>(lights);
+}
+
+std::uint64_t RenderPlan::predictedLightPasses() const {
+  return predictedViews() * static_cast<std::uint64_t>(lights);
+}
+
+double RenderPlan::paperEq7ShadowGenerations() const {
+  const double n = refFaces, d = reflections ? recursionDepth : 0;
+  return n * (d * d + 3.0 * d) / 2.0 + 1.0;
+}
+
+double RenderPlan::paperEq8Images() const {
+  return std::pow(static_cast<double>(refFaces), reflections ? recursionDepth : 0) + 1.0;
+}
+
+RenderPlan planRender(const Scene& scene, bool cull) {
+  RenderPlan p;
+  p.cull = cull;
+  p.levels = stencilLevelsFor(findProfile(scene.render.profile).value_or(indigoProfile()));
+  p.lights = static_cast<int>(scene.lights.size());
+  for (const RefFace& f : findRefFaces(scene))
+    ++p.refFaces;
+  for (const SceneObject& o : scene.objects)
+    if (o.castsShadows && !isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)])) ++p.shadowCasters;
+
+  p.reflections = scene.render.reflections && p.refFaces > 0 && scene.render.recursionDepth > 0;
+  p.recursionDepth = p.reflections ? scene.render.recursionDepth : 0;
+  if (p.refFaces == 0) p.notes.push_back("no mirror faces: no recursion (draw_ref_objects never runs)");
+  else if (!scene.render.reflections) p.notes.push_back("reflections off: mirrors drawn as their own colour");
+  else if (scene.render.recursionDepth == 0) p.notes.push_back("recursion_depth 0: mirrors drawn as their own colour");
+
+  p.shadows = scene.render.shadows && p.lights > 0 && p.shadowCasters > 0;
+  p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
+  if (p.lights == 0) p.notes.push_back("no lights: the ambient pass only");
+  else if (!scene.render.shadows) p.notes.push_back("shadows off: no shadow volumes");
+  else if (p.shadowCasters == 0) p.notes.push_back("no object casts a shadow: no shadow volumes");
+  return p;
+}
+
+std::string describePlan(const RenderPlan& p, const Scene& s) {
+  std::ostringstream o;
+  o << "scene: " << s.file << " (" << s.objects.size() << " objects, " << s.triangleCount() << " triangles, "
+    << p.lights << " lights, " << p.refFaces << " mirror faces)\n";
+  o << "stencil: ZERO 0, levels 1.." << p.levels.maxRecursionDepth() << ", SHAD_MIN " << p.levels.shadMin
+    << ", SHAD_ZERO " << p.levels.shadZero << ", max " << p.levels.max << " (at most "
+    << p.levels.maxShadowDepthAbove() << " nested shadow volumes)\n";
+  o << "plan (1994 Figure 4):\n";
+  o << "  draw_window: ambient pass, then per light "
+    << (p.shadows ? "shadow volumes (draw_all_shadows) and a lit pass" : "a lit pass (no shadows)") << "\n";
+  if (p.reflections)
+    o << "  draw_ref_objects: " << p.refFaces << " mirror faces, recursion depth " << p.recursionDepth
+      << (p.shadows ? ", shadows in views up to level " + std::to_string(p.shadowDepth) : std::string()) << "\n";
+  for (const std::string& n : p.notes) o << "  left out: " << n << "\n";
+  o << "predicted (culling off):\n";
+  o << "  views (scene renderings): " << p.predictedViews();
+  if (p.reflections) {
+    o << " =";
+    for (int l = 0; l <= p.recursionDepth; ++l) o << (l ? " + " : " ") << p.predictedViewsAtLevel(l);
+    o << "  (per level; 1994 eq. (5): n (n-1)^(d-1))";
+  }
+  o << "\n  lit passes: " << p.predictedLightPasses() << "\n";
+  o << "  shadow-volume passes: " << p.predictedShadowPasses() << "\n";
+  o << "  1997 eq. (7), shadow generations per light: " << p.paperEq7ShadowGenerations()
+    << "; eq. (8), images: " << p.paperEq8Images() << " (the papers' order-of-growth estimates)\n";
+  o << "culling " << (p.cull ? "on: faces seen from behind or hidden are skipped, counts never exceed these"
+                             : "off") << "\n";
+  return o.str();
+}
+
+}  // namespace mpr

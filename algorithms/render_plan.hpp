@@ -1,0 +1,44 @@
+#pragma once
+// The planner: from the scene, which passes of the 1994 paper's Figure 4 the
+// render needs, so that a scene pays only for the effects it uses (no
+// specular face: no recursion; no light or no shadow caster: no shadow
+// passes), and the pass counts it predicts.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "algorithms/ref_face.hpp"
+#include "algorithms/stencil_levels.hpp"
+#include "scene/scene.hpp"
+
+namespace mpr {
+
+struct RenderPlan {
+  int lights = 0;
+  int refFaces = 0;           // mirror faces the recursion reflects in
+  int shadowCasters = 0;      // non-specular objects with a shadow volume
+  bool shadows = false;       // shadow volumes drawn (draw_all_shadows)
+  bool reflections = false;   // draw_ref_objects runs
+  int recursionDepth = 0;     // REF_LEVEL reaches this (0 without reflections)
+  int shadowDepth = 0;        // shadows are drawn in views up to this level
+  bool cull = true;           // skip faces seen from behind and faces no pixel shows
+  StencilLevels levels;
+  std::vector<std::string> notes;  // what the planner left out and why
+
+  // Exact counts for this implementation with culling off: views (scene
+  // renderings: the camera plus every virtual camera), lit passes and
+  // shadow-volume passes. The paper's estimates are given beside them.
+  std::uint64_t predictedViews() const;
+  std::uint64_t predictedViewsAtLevel(int level) const;  // 1994 eq. (5) for level >= 1
+  std::uint64_t predictedShadowPasses() const;           // views up to shadowDepth x lights
+  std::uint64_t predictedLightPasses() const;            // views x lights
+  double paperEq7ShadowGenerations() const;               // 1997 eq. (7), per light
+  double paperEq8Images() const;                          // 1997 eq. (8)
+};
+
+RenderPlan planRender(const Scene& scene, bool cull = true);
+
+// The plan as text, for `mpr info`.
+std::string describePlan(const RenderPlan& plan, const Scene& scene);
+
+}  // namespace mpr

@@ -1,0 +1,75 @@
+#include "algorithms/shadow_pass.hpp"
+
+#include "algorithms/ref_face.hpp"
+#include "algorithms/shadow_geometry.hpp"
+
+namespace mpr {
+
+ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : scene_(scene) {
+  volumes_.resize(scene.lights.size());
+  if (!plan.shadows) return;
+  const SceneBounds bounds = sceneBounds(scene);
+  for (std::size_t l = 0; l < scene.lights.size(); ++l)
+    for (const SceneObject& o : scene.objects) {
+      if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)])) continue;
+      VolumeGeometry v = objectShadowVolume(o, scene.lights[l].position, bounds);
+      if (!v.closed && l == 0)
+        warnings_.push_back("object '" + o.name + "' (line " + std::to_string(o.line) +
+                            ") is not a closed mesh: its shadow volume is open and may count wrongly");
+      if (!v.sides.empty()) volumes_[l].push_back(std::move(v));
+    }
+}
+
+void ShadowPass::drawTriangles(GLCommandStream& gl, const std::vector<std::array<Vec3, 3>>& tris) const {
+  gl.call(GLCall::Begin, {"GL_TRIANGLES"});
+  for (const auto& t : tris)
+    for (const Vec3& p : t) gl.call(GLCall::Vertex3f, {p.x, p.y, p.z});
+  gl.call(GLCall::End, {});
+}
+
+std::uint64_t ShadowPass::drawVolumes(GLCommandStream& gl, int light, const ViewCamera& view, const Camera& camera,
+                                      const StencilLevels& lv) {
+  const std::vector<VolumeGeometry>& vols = volumes_[static_cast<std::size_t>(light)];
+  // Count only where the stencil holds a shadow value: the top bit
+  // (SHAD_MIN) set, i.e. SHAD_MIN <= stored & SHAD_MIN.
+  gl.call(GLCall::StencilFunc, {"GL_LEQUAL", static_cast<int>(lv.shadMin), static_cast<int>(lv.shadMin)});
+  gl.call(GLCall::StencilMask, {static_cast<int>(lv.max)});
+  gl.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
+  gl.call(GLCall::DepthMask, {"GL_FALSE"});
+  gl.call(GLCall::Enable, {"GL_DEPTH_TEST"});
+  gl.call(GLCall::DepthFunc, {"GL_LESS"});
+  gl.call(GLCall::Disable, {"GL_LIGHTING"});
+  gl.call(GLCall::Disable, {"GL_BLEND"});
+  gl.call(GLCall::Enable, {"GL_CULL_FACE"});
+  // Volumes the near plane cuts are counted behind the surface (z-fail);
+  // the eye and the near rectangle are taken into the real scene, where the
+  // volumes are.
+  const std::array<Vec3, 4> near = nearRectangle(camera, view.world, scene_.render.width, scene_.render.height);
+  const DVec3 eye = view.eye(camera);
+  std::vector<const VolumeGeometry*> zpass, zfail;
+  for (const VolumeGeometry& v : vols)
+    (volumeNeedsZFail(v, Vec3(eye), near) ? zfail : zpass).push_back(&v);
+  if (!zpass.empty()) {
+    gl.call(GLCall::CullFace, {"GL_BACK"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", "GL_INCR"});
+    for (const VolumeGeometry* v : zpass) drawTriangles(gl, v->sides);
+    gl.call(GLCall::CullFace, {"GL_FRONT"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", "GL_DECR"});
+    for (const VolumeGeometry* v : zpass) drawTriangles(gl, v->sides);
+  }
+  if (!zfail.empty()) {
+    gl.call(GLCall::CullFace, {"GL_FRONT"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_INCR", "GL_KEEP"});
+    for (const VolumeGeometry* v : zfail) drawTriangles(gl, v->sides), drawTriangles(gl, v->caps);
+    gl.call(GLCall::CullFace, {"GL_BACK"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_DECR", "GL_KEEP"});
+    for (const VolumeGeometry* v : zfail) drawTriangles(gl, v->sides), drawTriangles(gl, v->caps);
+  }
+  gl.call(GLCall::CullFace, {"GL_BACK"});
+  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", "GL_KEEP"});
+  gl.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
+  gl.call(GLCall::DepthMask, {"GL_TRUE"});
+  return zfail.size();
+}
+
+}  // namespace mpr

@@ -1,0 +1,49 @@
+#pragma once
+// make_all_shadows of the 1994 paper's Figure 4: the shadow volumes of every
+// casting object for one light, counted in the stencil about SHAD_ZERO
+// (in-out principle, Heidmann). Front faces in front of the visible surface
+// increment, back faces decrement (z-pass); where the eye (or the near
+// plane) is inside a volume z-pass fails, and that volume is counted
+// behind the surface instead (z-fail, with its caps). Only pixels holding a
+// shadow value (>= SHAD_MIN) are counted, so the recursion levels below
+// SHAD_MIN are never touched.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "algorithms/gl_command_stream.hpp"
+#include "algorithms/render_plan.hpp"
+#include "algorithms/stencil_levels.hpp"
+#include "algorithms/view_camera.hpp"
+#include "scene/scene.hpp"
+
+namespace mpr {
+
+// One object's shadow volume for one light, world space: sides and caps as
+// triangles, counter-clockwise seen from outside the volume.
+struct VolumeGeometry {
+  std::vector<std::array<Vec3, 3>> sides, caps;
+  bool closed = true;
+  std::string object;
+};
+
+class ShadowPass {
+ public:
+  ShadowPass(const Scene& scene, const RenderPlan& plan);
+
+  // Draws light `light`'s volumes as seen by `view` (GL state: the view is set
+  // up by the caller). Returns how many volumes needed z-fail.
+  std::uint64_t drawVolumes(GLCommandStream& gl, int light, const ViewCamera& view, const Camera& camera,
+                            const StencilLevels& levels);
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  const std::vector<VolumeGeometry>& volumes(int light) const { return volumes_[static_cast<std::size_t>(light)]; }
+
+ private:
+  void drawTriangles(GLCommandStream& gl, const std::vector<std::array<Vec3, 3>>& tris) const;
+  const Scene& scene_;
+  std::vector<std::vector<VolumeGeometry>> volumes_;  // per light
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace mpr

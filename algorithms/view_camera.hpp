@@ -1,0 +1,42 @@
+#pragma once
+// A camera of the drawwindow recursion (1994 paper, Figure 4): the scene's
+// camera, seen through the reflections (and refractions) of the faces the
+// recursion passed. Geometry is drawn with the modelview gluLookAt * world,
+// so `world` maps the real scene into the virtual one.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "pipeline/vecmath.hpp"
+#include "scene/scene.hpp"
+
+namespace mpr {
+
+using DMat4 = glm::dmat4;
+using DVec3 = glm::dvec3;
+using DVec4 = glm::dvec4;
+
+struct ViewCamera {
+  DMat4 world{1.0};        // real scene -> virtual scene
+  bool mirrored = false;   // an odd number of reflections: the winding flips
+  bool clip = false;       // keep world points with dot(clipPlane, (p, 1)) >= 0
+  DVec4 clipPlane{0.0};
+  int throughFace = -1;    // the ref face this view looks through (-1: the real camera)
+  int level = 0;           // recursion level (REF_LEVEL) this view is drawn at
+
+  // The eye in real-scene coordinates: where the virtual camera sits.
+  DVec3 eye(const Camera& c) const {
+    const DVec4 e = glm::inverse(world) * DVec4(DVec3(c.position), 1.0);
+    return DVec3(e) / e.w;
+  }
+};
+
+// The reflection through the plane dot(n, x) = c (n of unit length):
+// x -> x - 2 (dot(n, x) - c) n.
+inline DMat4 reflectionMatrix(DVec3 n, double c) {
+  DMat4 m(1.0);
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row) m[col][row] -= 2.0 * n[row] * n[col];
+  for (int row = 0; row < 3; ++row) m[3][row] = 2.0 * c * n[row];
+  return m;
+}
+
+}  // namespace mpr

@@ -1,0 +1,182 @@
+// The canonical scene of issue 5: one mirror, one light, recursion depth 2,
+// one shadow caster, 16x16 pixels. The stencil after every step of Figure 4
+// (every apply_stencil, draw_face and shadow pass) is asserted against
+// pictures derived by hand from the geometry:
+//
+//   camera at the origin looking down -z, fovy 90, aspect 1: a point (x, y, -d)
+//   lands at window x = 8 + 8 x / d, so on the plane z = -d pixel edges lie at
+//   x = d (k / 8 - 1): whole pixels for every rectangle below.
+//   wall    z = -4, x, y in [-4, 4]: the whole window.
+//   mirror  z = -3, x in [0.375, 2.25], y in [-1.125, 1.125]: window x 9..14,
+//           y 5..11, so pixels x 9..13, y 5..10.
+//   light   (-2, 0, -3); box x in [-2.25, -1.75], y in [-0.25, 0.25],
+//           z in [-3.5, -3.25]. Only the box's front face (z = -3.25) faces
+//           the light, so the silhouette is that face's outline. Its shadow on
+//           the wall (distance 1 from the light, 0.25 from the face: scale 4)
+//           is x in [-3, -1], y in [-1, 1]: pixels x 2..5, y 6..9. The box
+//           itself covers window x 2.46..3.69, y 7.38..8.62 (its front face at
+//           d = 3.25): pixels x 2..3, y 7..8, where the visible surface is the
+//           lit box, not the wall.
+//   Seen from the camera all four sides of the volume face it (their outward
+//   normals have z > 0 and the camera is in front), so each shadowed wall pixel
+//   is entered through exactly one side and never left before the wall: z-pass
+//   counts SHAD_ZERO + 1 = 193 there.
+//   The mirror reflects the space behind the camera (a wall facing it at
+//   z = 1); the virtual view clips at z = -3, which removes the box and its
+//   volume: no shadow counts inside the mirror.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algorithms/scene_renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/stencil_picture.hpp"
+
+namespace mpr {
+namespace {
+
+constexpr const char* kScene = R"(
+camera: {position: [0, 0, 0], look_at: [0, 0, -1], up: [0, 1, 0], fov: 90, near: 0.1, far: 20}
+ambient: [0.2, 0.2, 0.2]
+lights:
+  - {position: [-2, 0, -3], color: [1, 1, 1]}
+materials:
+  wall: {diffuse: [0.8, 0.8, 0.8]}
+  front: {diffuse: [0.6, 0.5, 0.4]}
+  red: {diffuse: [0.8, 0.2, 0.2]}
+  mirror: {kind: mirror, diffuse: [0.05, 0.05, 0.05], reflectance: 0.9}
+objects:
+  - {name: wall, primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1], material: wall}
+  - {name: front wall, primitive: quad, translate: [0, 0, 1], rotate: [180, 0, 1, 0], scale: [8, 8, 1], material: front}
+  - {name: box, primitive: box, translate: [-2, 0, -3.375], scale: [0.5, 0.5, 0.25], material: red}
+  - {name: mirror, primitive: quad, translate: [1.3125, 0, -3], scale: [1.875, 2.25, 1], material: mirror}
+render: {width: 16, height: 16, recursion_depth: 2, shadow_recursion_depth: 1}
+)";
+
+// SHAD_ZERO everywhere, SHAD_ZERO + 1 on the shadowed wall pixels.
+constexpr const char* kShadowCounted = R"(
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 193 193 193 193 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 193 193 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 193 193 192 192 192 192 192 192 192 192 192 192
+        192 192 193 193 193 193 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+        192 192 192 192 192 192 192 192 192 192 192 192 192 192 192 192
+)";
+
+// The mirror's pixels (.) inside render area level 1.
+constexpr const char* kMirrorMask = R"(
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   .   .   .   .   .   1   1
+          1   1   1   1   1   1   1   1   1   .   .   .   .   .   1   1
+          1   1   1   1   1   1   1   1   1   .   .   .   .   .   1   1
+          1   1   1   1   1   1   1   1   1   .   .   .   .   .   1   1
+          1   1   1   1   1   1   1   1   1   .   .   .   .   .   1   1
+          1   1   1   1   1   1   1   1   1   .   .   .   .   .   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+          1   1   1   1   1   1   1   1   1   1   1   1   1   1   1   1
+)";
+
+std::string uniform(int v) {
+  std::string row, pic = "\n";
+  for (int x = 0; x < 16; ++x) row += (v == 0 ? std::string(".") : std::to_string(v)) + " ";
+  for (int y = 0; y < 16; ++y) pic += row + "\n";
+  return pic;
+}
+
+// kMirrorMask with the mirror's pixels holding `inside` instead of 0.
+std::string mirrorHolding(int inside) {
+  std::string pic;
+  for (const char c : std::string(kMirrorMask)) pic += c == '.' ? std::to_string(inside) : std::string(1, c);
+  return pic;
+}
+
+struct Step {
+  std::string label;
+  std::string picture;
+};
+
+using StencilCopy = std::vector<std::uint8_t>;  // [y * 16 + x]
+
+std::vector<std::pair<std::string, StencilCopy>> renderCanonical() {
+  const Scene scene = loadSceneText(kScene, "canonical.yaml");
+  GLContext gl(16, 16, indigoProfile());
+  GLCommandStream stream(gl, false);
+  std::vector<std::pair<std::string, StencilCopy>> seen;
+  stream.onPassEnd([&](const std::string& label) {
+    StencilCopy s(256);
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) s[static_cast<std::size_t>(y * 16 + x)] = gl.framebuffer().stencil(x, y);
+    seen.emplace_back(label, std::move(s));
+  });
+  const RenderResult r = renderScene(scene, stream);
+  EXPECT_EQ(r.counts.views, 2u);
+  EXPECT_EQ(stream.glErrors(), 0u);
+  return seen;
+}
+
+TEST(DrawWindowCanonical, StencilAfterEveryStep) {
+  const auto seen = renderCanonical();
+  const std::string zero = uniform(0), shadZero = uniform(192), level1 = uniform(1);
+  // Label (without the routine path), stencil at the end of that pass.
+  const std::vector<Step> expected = {
+      {"clear | clear every buffer", zero},
+      {"ambient | draw_normal_objects(Camera, ZERO)  // ambient only", zero},
+      {"render area to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)", shadZero},
+      {"shadow volumes | make_all_shadows(ALWAYS)", kShadowCounted},
+      {"count check | apply_stencil(EQUAL, max, KEEP, max)  // saturated counts?", kShadowCounted},
+      {"lit outside the shadows | draw_normal_objects(Camera, SHAD_ZERO)", kShadowCounted},
+      {"reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)", shadZero},
+      {"back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)", zero},
+      {"clear | clear_stencil(ZERO)", zero},
+      {"render area to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)", level1},
+      {"mask the face | stencil(EQUAL, REF_LEVEL, REPLACE, ZERO); draw_face(ref_face)", kMirrorMask},
+      {"depth to far inside the mask | (the paper is silent: clear the face's pixels)", kMirrorMask},
+      // draw_window level 1, inside the mirror only.
+      {"ambient | draw_normal_objects(Camera, ZERO)  // ambient only", kMirrorMask},
+      {"render area to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)", mirrorHolding(192)},
+      {"shadow volumes | make_all_shadows(ALWAYS)", mirrorHolding(192)},
+      {"count check | apply_stencil(EQUAL, max, KEEP, max)  // saturated counts?", mirrorHolding(192)},
+      {"lit outside the shadows | draw_normal_objects(Camera, SHAD_ZERO)", mirrorHolding(192)},
+      {"reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)", mirrorHolding(192)},
+      {"back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)", kMirrorMask},
+      // draw_ref_objects level 2: the only face is the one looked through.
+      {"render area to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)", mirrorHolding(2)},
+      {"level done | apply_stencil(EQUAL, REF_LEVEL, REPLACE, ZERO)", kMirrorMask},
+      {"blend the face's own colour | two renderings through destination alpha", kMirrorMask},
+      {"face back to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)", level1},
+      {"level done | apply_stencil(EQUAL, REF_LEVEL, REPLACE, ZERO)", zero},
+  };
+  ASSERT_EQ(seen.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const std::string& label = seen[i].first;
+    const std::size_t cut = label.rfind(" > ");
+    EXPECT_EQ(cut == std::string::npos ? label : label.substr(cut + 3), expected[i].label) << "pass " << i + 1;
+    GLContext probe(16, 16, indigoProfile());
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) probe.framebuffer().stencil(x, y) = seen[i].second[static_cast<std::size_t>(y * 16 + x)];
+    const std::string mismatch = stencilPictureMismatch(probe.framebuffer(), 0, 0, expected[i].picture);
+    EXPECT_TRUE(mismatch.empty()) << "after pass " << i + 1 << " \"" << label << "\":\n" << mismatch;
+  }
+}
+
+}  // namespace
+}  // namespace mpr
