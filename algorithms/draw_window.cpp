@@ -20,8 +20,10 @@
 
 #include "algorithms/apply_stencil.hpp"
 #include "algorithms/ref_face.hpp"
+#include "algorithms/refraction.hpp"
 #include "algorithms/shadow_pass.hpp"
 #include "algorithms/view_camera.hpp"
+#include "pipeline/quad_to_quad.hpp"
 
 namespace mpr {
 namespace {
@@ -160,9 +162,23 @@ class WindowRenderer {
         path_.pop_back();
         continue;
       }
+      ViewCamera next = refCamera(cam, face, f, refLevel);
+      if (face.kind == MaterialKind::Refractive) {
+        const auto r = refractedView(cam, s_.camera, face, f, face.ior, aspect());
+        if (!r) {
+          // The face's image cannot be mapped (a corner behind a camera):
+          // nothing sensible to show through it; its mask is released below.
+          ++counts_.facesSkipped;
+          pass("apply_stencil", "face back to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)");
+          apply_stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Replace, level}, lv_);
+          path_.pop_back();
+          continue;
+        }
+        if (!r->totalReflection) next = r->view;  // past the critical angle the face is a mirror
+      }
       pass("ref face", "depth to far inside the mask | (the paper is silent: clear the face's pixels)");
       clearMaskToFar();
-      draw_window(refCamera(cam, face, f, refLevel));
+      draw_window(next);
       pass("ref face", "blend the face's own colour | two renderings through destination alpha");
       finishFace(cam, face);
       pass("apply_stencil", "face back to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)");
@@ -213,7 +229,7 @@ class WindowRenderer {
     }
     for (const SceneObject& o : s_.objects) {
       const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
-      if (isRefMaterial(m)) continue;  // "for (each non_ref object)"
+      if (isRefMaterial(m, s_.render)) continue;  // "for (each non_ref object)"
       setMaterial(m, light < 0);
       drawTriangles(o.mesh);
     }
@@ -225,9 +241,22 @@ class WindowRenderer {
     const Camera& c = s_.camera;
     gl_.call(GLCall::MatrixMode, {"GL_PROJECTION"});
     gl_.call(GLCall::LoadIdentity, {});
-    gl_.call(GLCall::Perspective, {static_cast<double>(c.fovY),
-                                   static_cast<double>(s_.render.width) / static_cast<double>(s_.render.height),
-                                   static_cast<double>(c.near), static_cast<double>(c.far)});
+    if (cam.mapped) {
+      // M3 as the user 4x4 of (A5), applied after the projection (it maps
+      // normalised device coordinates, x and y over w), but with Z kept:
+      // A5's zeroed Z makes the projection singular, and GL carries the user
+      // clip plane that cuts the refracted view at the face into clip space
+      // through the inverse projection (as Mesa does), so nothing would
+      // survive. Kept, Z is divided by the map's w, a positive factor
+      // constant along each view ray, so the depth order and the
+      // depth-equal light passes still hold.
+      Mat4 m = quadToQuadMatrix4(cam.imageMap);
+      m[2][2] = 1.0f;
+      gl_.call(GLCall::MultMatrixf, {m[0][0], m[0][1], m[0][2], m[0][3], m[1][0], m[1][1], m[1][2], m[1][3],
+                                     m[2][0], m[2][1], m[2][2], m[2][3], m[3][0], m[3][1], m[3][2], m[3][3]});
+    }
+    gl_.call(GLCall::Perspective, {static_cast<double>(c.fovY), aspect(), static_cast<double>(c.near),
+                                   static_cast<double>(c.far)});
     gl_.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
     gl_.call(GLCall::LoadIdentity, {});
     gl_.call(GLCall::LookAt, {static_cast<double>(c.position.x), static_cast<double>(c.position.y),
@@ -235,7 +264,7 @@ class WindowRenderer {
                               static_cast<double>(c.lookAt.y), static_cast<double>(c.lookAt.z),
                               static_cast<double>(c.up.x), static_cast<double>(c.up.y),
                               static_cast<double>(c.up.z)});
-    if (cam.level > 0) {
+    if (cam.world != DMat4(1.0)) {
       const DMat4& w = cam.world;
       gl_.call(GLCall::MultMatrixd, {w[0][0], w[0][1], w[0][2], w[0][3], w[1][0], w[1][1], w[1][2], w[1][3],
                                      w[2][0], w[2][1], w[2][2], w[2][3], w[3][0], w[3][1], w[3][2], w[3][3]});
@@ -266,6 +295,31 @@ class WindowRenderer {
     static constexpr std::string_view names[kMaxGLLights] = {"GL_LIGHT0", "GL_LIGHT1", "GL_LIGHT2", "GL_LIGHT3",
                                                              "GL_LIGHT4", "GL_LIGHT5", "GL_LIGHT6", "GL_LIGHT7"};
     return names[i];
+  }
+
+  double aspect() const { return static_cast<double>(s_.render.width) / static_cast<double>(s_.render.height); }
+
+  // Ambient and up to eight lights in one pass (GL's own sum).
+  void enableAllLights() {
+    gl_.call(GLCall::Enable, {"GL_LIGHTING"});
+    gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f});
+    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
+    for (int i = 0; i < lights; ++i) {
+      gl_.call(GLCall::Enable, {lightName(i)});
+      setLight(i, s_.lights[static_cast<std::size_t>(i)]);
+    }
+  }
+  void disableExtraLights() {
+    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
+    for (int i = 1; i < lights; ++i) gl_.call(GLCall::Disable, {lightName(i)});
+  }
+  void setFullMaterial(const SceneMaterial& m) {
+    const Vec3 d = m.diffuse;
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", d.x, d.y, d.z, 1.0f});
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", d.x, d.y, d.z, 1.0f});
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_SPECULAR", m.specular.x, m.specular.y, m.specular.z, 1.0f});
+    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_EMISSION", m.emission.x, m.emission.y, m.emission.z, 1.0f});
+    gl_.call(GLCall::Materialf, {"GL_FRONT_AND_BACK", "GL_SHININESS", m.shininess});
   }
 
   void setMaterial(const SceneMaterial& m, bool ambientPass) {
@@ -365,27 +419,17 @@ class WindowRenderer {
     gl_.call(GLCall::Disable, {"GL_BLEND"});
     gl_.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_TRUE"});
     gl_.call(GLCall::DepthMask, {"GL_FALSE"});
-    gl_.call(GLCall::Color4f, {0.0f, 0.0f, 0.0f, 1.0f - m.reflectance});
+    const float through = m.kind == MaterialKind::Refractive ? m.transmittance : m.reflectance;
+    gl_.call(GLCall::Color4f, {0.0f, 0.0f, 0.0f, 1.0f - through});
     drawPolygon(face, false);
     gl_.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
     gl_.call(GLCall::DepthMask, {"GL_TRUE"});
     gl_.call(GLCall::Enable, {"GL_BLEND"});
     gl_.call(GLCall::BlendFunc, {"GL_DST_ALPHA", "GL_ONE_MINUS_DST_ALPHA"});
-    gl_.call(GLCall::Enable, {"GL_LIGHTING"});
-    gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f});
-    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
-    for (int i = 0; i < lights; ++i) {
-      gl_.call(GLCall::Enable, {lightName(i)});
-      setLight(i, s_.lights[static_cast<std::size_t>(i)]);
-    }
-    const Vec3 d = m.diffuse;
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", d.x, d.y, d.z, 1.0f});
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", d.x, d.y, d.z, 1.0f});
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_SPECULAR", m.specular.x, m.specular.y, m.specular.z, 1.0f});
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_EMISSION", m.emission.x, m.emission.y, m.emission.z, 1.0f});
-    gl_.call(GLCall::Materialf, {"GL_FRONT_AND_BACK", "GL_SHININESS", m.shininess});
+    enableAllLights();
+    setFullMaterial(m);
     drawPolygon(face, true);
-    for (int i = 1; i < lights; ++i) gl_.call(GLCall::Disable, {lightName(i)});
+    disableExtraLights();
     gl_.call(GLCall::Disable, {"GL_BLEND"});
   }
 

@@ -7,11 +7,12 @@ std::vector<RefFace> findRefFaces(const Scene& scene) {
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const SceneObject& obj = scene.objects[o];
     const SceneMaterial& m = scene.materials[static_cast<std::size_t>(obj.material)];
-    if (!isRefMaterial(m)) continue;
+    if (!isRefMaterial(m, scene.render)) continue;
     for (const auto& poly : obj.mesh.faces) {
       RefFace f;
       f.object = static_cast<int>(o);
       f.kind = m.kind;
+      f.ior = m.ior;
       DVec3 newell(0.0), centre(0.0);
       for (std::size_t i = 0; i < poly.size(); ++i) {
         const DVec3 a(obj.mesh.positions[poly[i]]), b(obj.mesh.positions[poly[(i + 1) % poly.size()]]);

@@ -15,15 +15,22 @@ struct RefFace {
   double offset = 0.0;         // the plane: dot(normal, x) = offset
   DVec3 centre{0.0};
   MaterialKind kind = MaterialKind::Mirror;
+  double ior = 1.0;            // refractive faces
+  // Whether looking through the face turns the camera and maps the image
+  // (refraction with ior != 1); mirrors and ior 1 do neither.
+  bool mapsImage() const { return kind == MaterialKind::Refractive && ior != 1.0; }
 
   // > 0 in front of the face, < 0 behind it.
   double side(DVec3 p) const { return glm::dot(normal, p) - offset; }
 };
 
-// The materials whose faces the recursion looks through. Refraction,
-// translucency and frosted glass are drawn as their diffuse colour until
+// The materials whose faces the recursion looks through: mirrors (when
+// reflections are on) and refracting faces (when refractions are on).
+// Translucency and frosted glass are drawn as their diffuse colour until
 // their passes land.
-inline bool isRefMaterial(const SceneMaterial& m) { return m.kind == MaterialKind::Mirror; }
+inline bool isRefMaterial(const SceneMaterial& m, const RenderSettings& r) {
+  return (m.kind == MaterialKind::Mirror && r.reflections) || (m.kind == MaterialKind::Refractive && r.refractions);
+}
 
 // Every polygon of every ref object, in scene order (Newell normals; the
 // loader has already refused non-planar and zero-area specular faces).

@@ -26,7 +26,8 @@ std::uint64_t RenderPlan::predictedViews() const {
 std::uint64_t RenderPlan::predictedShadowPasses() const {
   if (!shadows) return 0;
   std::uint64_t views = 0;
-  for (int l = 0; l <= std::min(shadowDepth, recursionDepth); ++l) views += predictedViewsAtLevel(l);
+  for (int l = 0; l <= std::min(shadowDepth, recursionDepth); ++l)
+    views += predictedViewsAtLevel(l);
   return views * static_cast<std::uint64_t>(lights);
 }
 
@@ -48,16 +49,19 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   p.cull = cull;
   p.levels = stencilLevelsFor(findProfile(scene.render.profile).value_or(indigoProfile()));
   p.lights = static_cast<int>(scene.lights.size());
-  for (const RefFace& f : findRefFaces(scene))
+  for (const RefFace& f : findRefFaces(scene)) {
     ++p.refFaces;
+    if (f.kind == MaterialKind::Refractive) ++p.refractingFaces;
+  }
   for (const SceneObject& o : scene.objects)
-    if (o.castsShadows && !isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)])) ++p.shadowCasters;
+    if (o.castsShadows && !isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render)) ++p.shadowCasters;
 
-  p.reflections = scene.render.reflections && p.refFaces > 0 && scene.render.recursionDepth > 0;
+  p.reflections = p.refFaces > 0 && scene.render.recursionDepth > 0;
   p.recursionDepth = p.reflections ? scene.render.recursionDepth : 0;
-  if (p.refFaces == 0) p.notes.push_back("no mirror faces: no recursion (draw_ref_objects never runs)");
-  else if (!scene.render.reflections) p.notes.push_back("reflections off: mirrors drawn as their own colour");
-  else if (scene.render.recursionDepth == 0) p.notes.push_back("recursion_depth 0: mirrors drawn as their own colour");
+  if (p.refFaces == 0) p.notes.push_back("no mirror or refracting faces: no recursion (draw_ref_objects never runs)");
+  else if (scene.render.recursionDepth == 0) p.notes.push_back("recursion_depth 0: specular faces drawn as their own colour");
+  if (!scene.render.reflections) p.notes.push_back("reflections off: mirrors drawn as their own colour");
+  if (!scene.render.refractions) p.notes.push_back("refractions off: refracting faces drawn as their own colour");
 
   p.shadows = scene.render.shadows && p.lights > 0 && p.shadowCasters > 0;
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
@@ -70,7 +74,8 @@ RenderPlan planRender(const Scene& scene, bool cull) {
 std::string describePlan(const RenderPlan& p, const Scene& s) {
   std::ostringstream o;
   o << "scene: " << s.file << " (" << s.objects.size() << " objects, " << s.triangleCount() << " triangles, "
-    << p.lights << " lights, " << p.refFaces << " mirror faces)\n";
+    << p.lights << " lights, " << p.refFaces - p.refractingFaces << " mirror faces, " << p.refractingFaces
+    << " refracting faces)\n";
   o << "stencil: ZERO 0, levels 1.." << p.levels.maxRecursionDepth() << ", SHAD_MIN " << p.levels.shadMin
     << ", SHAD_ZERO " << p.levels.shadZero << ", max " << p.levels.max << " (at most "
     << p.levels.maxShadowDepthAbove() << " nested shadow volumes)\n";
@@ -78,7 +83,7 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
   o << "  draw_window: ambient pass, then per light "
     << (p.shadows ? "shadow volumes (draw_all_shadows) and a lit pass" : "a lit pass (no shadows)") << "\n";
   if (p.reflections)
-    o << "  draw_ref_objects: " << p.refFaces << " mirror faces, recursion depth " << p.recursionDepth
+    o << "  draw_ref_objects: " << p.refFaces << " faces, recursion depth " << p.recursionDepth
       << (p.shadows ? ", shadows in views up to level " + std::to_string(p.shadowDepth) : std::string()) << "\n";
   for (const std::string& n : p.notes) o << "  left out: " << n << "\n";
   o << "predicted (culling off):\n";

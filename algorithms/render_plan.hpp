@@ -15,7 +15,8 @@ namespace mpr {
 
 struct RenderPlan {
   int lights = 0;
-  int refFaces = 0;           // mirror faces the recursion reflects in
+  int refFaces = 0;           // faces the recursion looks through (mirror and refracting)
+  int refractingFaces = 0;    // of which refract (the rest reflect)
   int shadowCasters = 0;      // non-specular objects with a shadow volume
   bool shadows = false;       // shadow volumes drawn (draw_all_shadows)
   bool reflections = false;   // draw_ref_objects runs

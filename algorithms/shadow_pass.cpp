@@ -8,15 +8,15 @@ namespace mpr {
 ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : scene_(scene) {
   volumes_.resize(scene.lights.size());
   if (!plan.shadows) return;
-  const SceneBounds bounds = sceneBounds(scene);
+  const BoundingSphere bounds = sceneBoundingSphere(scene);
   for (std::size_t l = 0; l < scene.lights.size(); ++l)
     for (const SceneObject& o : scene.objects) {
-      if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)])) continue;
+      if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render)) continue;
       VolumeGeometry v = objectShadowVolume(o, scene.lights[l].position, bounds);
       if (!v.closed && l == 0)
         warnings_.push_back("object '" + o.name + "' (line " + std::to_string(o.line) +
                             ") is not a closed mesh: its shadow volume is open and may count wrongly");
-      if (!v.sides.empty()) volumes_[l].push_back(std::move(v));
+      if (!v.volume.empty()) volumes_[l].push_back(std::move(v));
     }
 }
 
@@ -44,7 +44,8 @@ std::uint64_t ShadowPass::drawVolumes(GLCommandStream& gl, int light, const View
   // Volumes the near plane cuts are counted behind the surface (z-fail);
   // the eye and the near rectangle are taken into the real scene, where the
   // volumes are.
-  const std::array<Vec3, 4> near = nearRectangle(camera, view.world, scene_.render.width, scene_.render.height);
+  const std::array<Vec3, 4> near = nearRectangle(
+      camera, view.world, static_cast<double>(scene_.render.width) / static_cast<double>(scene_.render.height));
   const DVec3 eye = view.eye(camera);
   std::vector<const VolumeGeometry*> zpass, zfail;
   for (const VolumeGeometry& v : vols)

@@ -14,6 +14,7 @@
 
 #include "algorithms/gl_command_stream.hpp"
 #include "algorithms/render_plan.hpp"
+#include "algorithms/shadow_volume.hpp"
 #include "algorithms/stencil_levels.hpp"
 #include "algorithms/view_camera.hpp"
 #include "scene/scene.hpp"
@@ -23,6 +24,7 @@ namespace mpr {
 // One object's shadow volume for one light, world space: sides and caps as
 // triangles, counter-clockwise seen from outside the volume.
 struct VolumeGeometry {
+  ShadowVolume volume;
   std::vector<std::array<Vec3, 3>> sides, caps;
   bool closed = true;
   std::string object;

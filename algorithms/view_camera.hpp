@@ -13,6 +13,7 @@ namespace mpr {
 using DMat4 = glm::dmat4;
 using DVec3 = glm::dvec3;
 using DVec4 = glm::dvec4;
+using DMat3 = glm::dmat3;
 
 struct ViewCamera {
   DMat4 world{1.0};        // real scene -> virtual scene
@@ -21,6 +22,12 @@ struct ViewCamera {
   DVec4 clipPlane{0.0};
   int throughFace = -1;    // the ref face this view looks through (-1: the real camera)
   int level = 0;           // recursion level (REF_LEVEL) this view is drawn at
+  // Refracted views: the projective map M3 (1994 eqs. 1-3, Appendix) from this
+  // camera's normalised device coordinates onto the screen, in the paper's
+  // row-vector convention; loaded before the projection as the 4x4 of (A5)
+  // (with Z kept, see draw_window.cpp).
+  bool mapped = false;
+  DMat3 imageMap{1.0};
 
   // The eye in real-scene coordinates: where the virtual camera sits.
   DVec3 eye(const Camera& c) const {

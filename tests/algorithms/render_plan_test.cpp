@@ -108,7 +108,7 @@ TEST(RenderPlan, InfoNamesWhatWasLeftOut) {
   const Scene s = loadSceneText("lights: []\nobjects: [{primitive: box}]\n", "s.yaml");
   const RenderPlan p = planRender(s);
   const std::string text = describePlan(p, s);
-  EXPECT_NE(text.find("no mirror faces"), std::string::npos) << text;
+  EXPECT_NE(text.find("no mirror or refracting faces"), std::string::npos) << text;
   EXPECT_NE(text.find("no lights"), std::string::npos) << text;
   EXPECT_EQ(p.predictedViews(), 1u);
 }
