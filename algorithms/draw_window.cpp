@@ -163,7 +163,7 @@ class WindowRenderer {
         continue;
       }
       ViewCamera next = refCamera(cam, face, f, refLevel);
-      if (face.kind == MaterialKind::Refractive) {
+      if (face.refracts()) {
         const auto r = refractedView(cam, s_.camera, face, f, face.ior, aspect());
         if (!r) {
           // The face's image cannot be mapped (a corner behind a camera):
@@ -175,9 +175,20 @@ class WindowRenderer {
           continue;
         }
         if (!r->totalReflection) next = r->view;  // past the critical angle the face is a mirror
+        if (face.kind == MaterialKind::Translucent && !r->totalReflection) {
+          // Fog from the face (its centre's eye distance in the view through
+          // it) to fog_distance behind it.
+          const DMat4 view = glm::lookAt(DVec3(s_.camera.position), DVec3(s_.camera.lookAt), DVec3(s_.camera.up));
+          const DVec4 c = view * next.world * DVec4(face.centre, 1.0);
+          next.fog = true;
+          next.fogColor = face.color;
+          next.fogStart = static_cast<float>(std::max(0.0, -c.z));
+          next.fogEnd = next.fogStart + face.fogDistance;
+        }
       }
       pass("ref face", "depth to far inside the mask | (the paper is silent: clear the face's pixels)");
-      clearMaskToFar();
+      // Nothing behind a translucent face is as far as full fog.
+      clearMaskToFar(next.fog ? next.fogColor : Vec3(0.0f));
       draw_window(next);
       pass("ref face", "blend the face's own colour | two renderings through destination alpha");
       finishFace(cam, face);
@@ -227,12 +238,23 @@ class WindowRenderer {
       gl_.call(GLCall::Enable, {"GL_LIGHT0"});
       setLight(0, s_.lights[static_cast<std::size_t>(light)]);
     }
+    if (cam.fog) {
+      // The ambient pass fades to the material's colour, the light passes to
+      // black: their sum is f * lit + (1 - f) * colour, fog of the whole.
+      const Vec3 c = light < 0 ? cam.fogColor : Vec3(0.0f);
+      gl_.call(GLCall::Enable, {"GL_FOG"});
+      gl_.call(GLCall::Fogi, {"GL_FOG_MODE", "GL_LINEAR"});
+      gl_.call(GLCall::Fogf, {"GL_FOG_START", cam.fogStart});
+      gl_.call(GLCall::Fogf, {"GL_FOG_END", cam.fogEnd});
+      gl_.call(GLCall::Fogfv, {"GL_FOG_COLOR", c.x, c.y, c.z, 1.0f});
+    }
     for (const SceneObject& o : s_.objects) {
       const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
       if (isRefMaterial(m, s_.render)) continue;  // "for (each non_ref object)"
       setMaterial(m, light < 0);
       drawTriangles(o.mesh);
     }
+    if (cam.fog) gl_.call(GLCall::Disable, {"GL_FOG"});
     if (light >= 0) ++counts_.lightPasses;
   }
 
@@ -379,9 +401,10 @@ class WindowRenderer {
     gl_.call(GLCall::DepthMask, {"GL_TRUE"});
   }
 
-  // Inside the face's mask (stencil ZERO): clear colour and depth = far, so
+  // Inside the face's mask (stencil ZERO): clear colour (black, or a
+  // translucent face's fog colour) and depth = far, so
   // the virtual scene can be drawn there with the depth test.
-  void clearMaskToFar() {
+  void clearMaskToFar(Vec3 colour) {
     stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
     gl_.call(GLCall::Disable, {"GL_LIGHTING"});
     gl_.call(GLCall::Disable, {"GL_BLEND"});
@@ -394,7 +417,7 @@ class WindowRenderer {
     gl_.call(GLCall::LoadIdentity, {});
     gl_.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
     gl_.call(GLCall::LoadIdentity, {});
-    gl_.call(GLCall::Color4f, {0.0f, 0.0f, 0.0f, 1.0f});
+    gl_.call(GLCall::Color4f, {colour.x, colour.y, colour.z, 1.0f});
     gl_.call(GLCall::Begin, {"GL_QUADS"});
     gl_.call(GLCall::Vertex3f, {-1.0f, -1.0f, 1.0f});
     gl_.call(GLCall::Vertex3f, {1.0f, -1.0f, 1.0f});
@@ -419,7 +442,7 @@ class WindowRenderer {
     gl_.call(GLCall::Disable, {"GL_BLEND"});
     gl_.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_TRUE"});
     gl_.call(GLCall::DepthMask, {"GL_FALSE"});
-    const float through = m.kind == MaterialKind::Refractive ? m.transmittance : m.reflectance;
+    const float through = m.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
     gl_.call(GLCall::Color4f, {0.0f, 0.0f, 0.0f, 1.0f - through});
     drawPolygon(face, false);
     gl_.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});

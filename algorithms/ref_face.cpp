@@ -13,6 +13,8 @@ std::vector<RefFace> findRefFaces(const Scene& scene) {
       f.object = static_cast<int>(o);
       f.kind = m.kind;
       f.ior = m.ior;
+      f.fogDistance = m.fogDistance;
+      f.color = m.diffuse;
       DVec3 newell(0.0), centre(0.0);
       for (std::size_t i = 0; i < poly.size(); ++i) {
         const DVec3 a(obj.mesh.positions[poly[i]]), b(obj.mesh.positions[poly[(i + 1) % poly.size()]]);

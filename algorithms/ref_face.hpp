@@ -18,7 +18,10 @@ struct RefFace {
   double ior = 1.0;            // refractive faces
   // Whether looking through the face turns the camera and maps the image
   // (refraction with ior != 1); mirrors and ior 1 do neither.
-  bool mapsImage() const { return kind == MaterialKind::Refractive && ior != 1.0; }
+  bool mapsImage() const { return kind != MaterialKind::Mirror && ior != 1.0; }
+  bool refracts() const { return kind == MaterialKind::Refractive || kind == MaterialKind::Translucent; }
+  float fogDistance = 1.0f;    // translucent faces
+  Vec3 color{0.0f};            // the material's diffuse colour (translucent fog colour)
 
   // > 0 in front of the face, < 0 behind it.
   double side(DVec3 p) const { return glm::dot(normal, p) - offset; }
@@ -29,7 +32,8 @@ struct RefFace {
 // Translucency and frosted glass are drawn as their diffuse colour until
 // their passes land.
 inline bool isRefMaterial(const SceneMaterial& m, const RenderSettings& r) {
-  return (m.kind == MaterialKind::Mirror && r.reflections) || (m.kind == MaterialKind::Refractive && r.refractions);
+  return (m.kind == MaterialKind::Mirror && r.reflections) || (m.kind == MaterialKind::Refractive && r.refractions) ||
+         (m.kind == MaterialKind::Translucent && r.translucency);
 }
 
 // Every polygon of every ref object, in scene order (Newell normals; the

@@ -51,7 +51,7 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   p.lights = static_cast<int>(scene.lights.size());
   for (const RefFace& f : findRefFaces(scene)) {
     ++p.refFaces;
-    if (f.kind == MaterialKind::Refractive) ++p.refractingFaces;
+    if (f.refracts()) ++p.refractingFaces;
   }
   for (const SceneObject& o : scene.objects)
     if (o.castsShadows && !isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render)) ++p.shadowCasters;
@@ -62,6 +62,7 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   else if (scene.render.recursionDepth == 0) p.notes.push_back("recursion_depth 0: specular faces drawn as their own colour");
   if (!scene.render.reflections) p.notes.push_back("reflections off: mirrors drawn as their own colour");
   if (!scene.render.refractions) p.notes.push_back("refractions off: refracting faces drawn as their own colour");
+  if (!scene.render.translucency) p.notes.push_back("translucency off: translucent faces drawn as their own colour");
 
   p.shadows = scene.render.shadows && p.lights > 0 && p.shadowCasters > 0;
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;

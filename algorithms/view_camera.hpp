@@ -28,6 +28,12 @@ struct ViewCamera {
   // (with Z kept, see draw_window.cpp).
   bool mapped = false;
   DMat3 imageMap{1.0};
+  // Seen through a translucent face (1994 "Object attributes and
+  // translucency"): linear fog from the face's distance (clear) to
+  // fog_distance behind it (the material's colour).
+  bool fog = false;
+  Vec3 fogColor{0.0f};
+  float fogStart = 0.0f, fogEnd = 1.0f;
 
   // The eye in real-scene coordinates: where the virtual camera sits.
   DVec3 eye(const Camera& c) const {

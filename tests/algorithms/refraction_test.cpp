@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "algorithms/refraction.hpp"
+#include "algorithms/scene_renderer.hpp"
 #include "pipeline/quad_to_quad.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -48,6 +49,40 @@ TEST(Refraction, IndexOneIsThePlainView) {
   EXPECT_FALSE(r->view.mapped);
   EXPECT_EQ(r->view.world, DMat4(1.0));
   EXPECT_EQ(r->incidence, r->refracted);
+}
+
+// Translucency by fog: a slab 3 units in front of a wall, fog_distance 1, so
+// the wall lies past the fog's end. Seen through the slab, before the slab's
+// own colour is blended in, every wall pixel is exactly the fog colour (the
+// ambient pass fogs to the colour, the light pass to black: 0.6, 0.4, 0.2 ->
+// 153, 102, 51); outside the slab the wall is unfogged.
+TEST(Translucency, FogReachesTheMaterialColourAtFogDistance) {
+  const Scene s = loadSceneText(R"(
+camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov: 90, near: 0.1, far: 20}
+lights: [{position: [0, 0, -2]}]
+materials: {milk: {kind: translucent, ior: 1, diffuse: [0.6, 0.4, 0.2], fog_distance: 1}}
+objects:
+  - {primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
+  - {primitive: quad, translate: [0, 0, -1], material: milk}
+render: {width: 16, height: 16}
+)", "milk.yaml");
+  GLContext gl(16, 16, indigoProfile());
+  GLCommandStream stream(gl, false);
+  std::vector<Rgba8> beforeBlend, direct;
+  stream.onPassEnd([&](const std::string& label) {
+    if (label.find("draw_window level 0 > light 0") != std::string::npos) direct = gl.framebuffer().colorData();
+    if (label.find("draw_window level 1 > light 0") != std::string::npos) beforeBlend = gl.framebuffer().colorData();
+  });
+  const RenderResult r = renderScene(s, stream);
+  EXPECT_EQ(r.counts.views, 2u);
+  ASSERT_EQ(beforeBlend.size(), 256u);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const bool inSlab = x >= 4 && x < 12 && y >= 4 && y < 12;  // NDC +-0.5 at distance 1
+      const Rgba8 c = beforeBlend[static_cast<std::size_t>(y * 16 + x)];
+      if (inSlab) EXPECT_EQ(c, (Rgba8{153, 102, 51, 255})) << x << "," << y;
+      else EXPECT_EQ(c, direct[static_cast<std::size_t>(y * 16 + x)]) << x << "," << y;
+    }
 }
 
 }  // namespace
