@@ -51,6 +51,44 @@ TEST(Refraction, IndexOneIsThePlainView) {
   EXPECT_EQ(r->incidence, r->refracted);
 }
 
+// Index of refraction 1 is plain transparency, bit for bit: a clear pane
+// (transmittance 1, so its own colour weighs nothing) in front of a wall and
+// a box renders the same colour bytes as the scene without the pane. (Nothing
+// crosses the pane's plane, whose clip plane would otherwise cut triangles.)
+TEST(Refraction, IndexOneIsPlainTransparencyBitForBit) {
+  const std::string base = R"(
+camera: {position: [0.3, 0.2, 0], look_at: [0, 0, -1], fov: 70, near: 0.1, far: 20}
+lights: [{position: [1, 1, -1]}]
+materials:
+  clear: {kind: refractive, ior: 1, transmittance: 1, diffuse: [0.5, 0.5, 0.5]}
+  red: {diffuse: [0.8, 0.2, 0.2], specular: [0.3, 0.3, 0.3], shininess: 20}
+objects:
+  - {primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
+  - {primitive: box, translate: [-0.4, -0.2, -3], scale: 0.6, material: red}
+)";
+  const std::string pane = "  - {primitive: quad, translate: [0, 0, -1.5], rotate: [20, 0, 1, 0], material: clear}\n";
+  auto render = [](const std::string& text) {
+    const Scene s = loadSceneText(text + "render: {width: 32, height: 24}\n", "pane.yaml");
+    GLContext gl(32, 24, indigoProfile());
+    GLCommandStream stream(gl, false);
+    const RenderResult r = renderScene(s, stream);
+    EXPECT_EQ(stream.glErrors(), 0u);
+    return std::make_pair(gl.framebuffer().colorData(), r.counts.views);
+  };
+  const auto [without, viewsWithout] = render(base);
+  const auto [with, viewsWith] = render(base + pane);
+  EXPECT_EQ(viewsWithout, 1u);
+  EXPECT_EQ(viewsWith, 2u);
+  ASSERT_EQ(with.size(), without.size());
+  int differ = 0;
+  for (std::size_t i = 0; i < with.size(); ++i) {
+    // Alpha is the bookkeeping channel of the blend (destination alpha).
+    const bool same = with[i][0] == without[i][0] && with[i][1] == without[i][1] && with[i][2] == without[i][2];
+    if (!same && ++differ <= 5) ADD_FAILURE() << "pixel " << i % 32 << "," << i / 32;
+  }
+  EXPECT_EQ(differ, 0);
+}
+
 // Translucency by fog: a slab 3 units in front of a wall, fog_distance 1, so
 // the wall lies past the fog's end. Seen through the slab, before the slab's
 // own colour is blended in, every wall pixel is exactly the fog colour (the
