@@ -28,6 +28,8 @@ namespace mpr {
 
 using GLenumValue = std::uint32_t;
 
+struct LlvmpipeDepth;  // llvmpipe's depth planes for one triangle (gl_context_draw.cpp)
+
 // Counters a renderer reports with --stats and a benchmark divides by time.
 struct PipelineCounters {
   std::uint64_t triangles = 0;        // after primitive assembly
@@ -165,8 +167,9 @@ class GLContext {
   void afterMatrixChange();
   void applyColorMaterial();
   ClipVertex processVertex(const Vertex& v) const;
-  void drawTriangle(const std::array<ClipVertex, 3>& tri);
-  void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c);
+  void drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
+  void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                                const LlvmpipeDepth& depth);
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
 
   Framebuffer fb_;

@@ -3,7 +3,9 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 
 #include "pipeline/gl_context.hpp"
 #include "pipeline/transforms.hpp"
@@ -18,7 +20,215 @@ bool finite4(const Vec4& v) {
 
 Vec4 clampColor(const Vec4& c) { return glm::clamp(c, Vec4(0.0f), Vec4(1.0f)); }
 
+// The viewport transform as Mesa's state tracker hands it to llvmpipe: OSMesa
+// draws into a window-system buffer, so y is flipped (st_atom_viewport.c:
+// scale[1] = -scale[1], translate[1] = fb_height - translate[1]) and llvmpipe
+// counts rows downwards from the top.
+struct WindowTransform {
+  float scaleX, transX, scaleY, transY, scaleZ, transZ;
+  int fbHeight;
+};
+
+// A clip-space vertex as Mesa's draw module carries it: `original` for one
+// that came out of the vertex shader, false for one the clipper made.
+struct DrawVertex {
+  Vec4 clip;
+  bool original;
+};
+
+struct LlWindow {  // window position in llvmpipe's y-down space
+  float x, y, z;
+};
+
+LlWindow toLlWindow(const DrawVertex& v, const WindowTransform& t) {
+  const float oow = 1.0f / v.clip.w;
+  const float flippedTransY = static_cast<float>(t.fbHeight) - t.transY;
+  if (v.original)  // draw_llvm.c generate_viewport: (clip * 1/w) * scale + translate, one fmuladd
+    return {std::fma(v.clip.x * oow, t.scaleX, t.transX), std::fma(v.clip.y * oow, -t.scaleY, flippedTransY),
+            std::fma(v.clip.z * oow, t.scaleZ, t.transZ)};
+  // draw_pipe_clip.c interp(): the same in C, unfused
+  return {v.clip.x * oow * t.scaleX + t.transX, v.clip.y * oow * -t.scaleY + flippedTransY,
+          v.clip.z * oow * t.scaleZ + t.transZ};
+}
+
+// draw's fixed clip planes in its bit order (draw_context.c draw->plane[0..5],
+// the clip mask bits of draw_llvm.c generate_clipmask): x <= w, x >= -w,
+// y <= w, y >= -w, z >= -w, z <= w; user planes follow as bits 6 and up.
+constexpr float kDrawPlanes[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1},
+                                     {0, 1, 0, 1},  {0, 0, 1, 1}, {0, 0, -1, 1}};
+
+Vec4 drawPlane(std::size_t i, const std::vector<ClipPlane>& userPlanes) {
+  return i < 6 ? Vec4(kDrawPlanes[i][0], kDrawPlanes[i][1], kDrawPlanes[i][2], kDrawPlanes[i][3]) : userPlanes[i - 6];
+}
+
+// The vertex's clip mask as draw_llvm.c generate_clipmask computes it.
+std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes) {
+  std::uint32_t m = 0;
+  if (p.x > p.w) m |= 1u;
+  if (p.x + p.w < 0.0f) m |= 2u;
+  if (p.y > p.w) m |= 4u;
+  if (p.y + p.w < 0.0f) m |= 8u;
+  if (p.z + p.w < 0.0f) m |= 16u;
+  if (p.z > p.w) m |= 32u;
+  for (std::size_t i = 0; i < userPlanes.size(); ++i) {
+    const Vec4& u = userPlanes[i];
+    const float d = std::fma(u.w, p.w, std::fma(u.z, p.z, std::fma(u.y, p.y, u.x * p.x)));
+    if (0.0f > d || !std::isfinite(d)) m |= 1u << (6 + i);
+  }
+  return m;
+}
+
+// Clips a triangle as draw_pipe_clip.c do_clip_tri does (Mesa 22.3): plane by
+// plane of `mask` (the vertices' clip masks together) in bit order, each new
+// vertex interpolated from the vertex nearer the plane, out + t * (in - out)
+// per component; the polygon keeps its first vertex, the provoking one of the
+// fan emit_poly makes. (MPR's own clipper, which decides coverage, orders
+// planes and intersections differently; the polygon is the same up to
+// rounding.)
+std::vector<DrawVertex> clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::uint32_t mask,
+                                     const std::vector<ClipPlane>& userPlanes) {
+  std::vector<DrawVertex> in(tri.begin(), tri.end()), out;
+  auto dot4 = [](const Vec4& a, const Vec4& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; };
+  auto lerp = [](float t, const DrawVertex& o, const DrawVertex& i) {
+    return DrawVertex{Vec4(o.clip.x + t * (i.clip.x - o.clip.x), o.clip.y + t * (i.clip.y - o.clip.y),
+                           o.clip.z + t * (i.clip.z - o.clip.z), o.clip.w + t * (i.clip.w - o.clip.w)),
+                      false};
+  };
+  while (mask != 0 && in.size() >= 3) {
+    const int planeIndex = std::countr_zero(mask);
+    mask &= ~(1u << planeIndex);
+    const Vec4 plane = drawPlane(static_cast<std::size_t>(planeIndex), userPlanes);
+    out.clear();
+    DrawVertex prev = in[0];
+    float dpPrev = dot4(prev.clip, plane);
+    if (!std::isfinite(dpPrev)) return {};
+    in.push_back(in[0]);
+    for (std::size_t i = 1; i < in.size(); ++i) {
+      const DrawVertex& v = in[i];
+      const float dp = dot4(v.clip, plane);
+      if (!std::isfinite(dp)) return {};
+      bool differentSign;
+      if (dpPrev >= 0.0f) {
+        out.push_back(prev);
+        differentSign = dp < 0.0f;
+      } else {
+        differentSign = !(dp < 0.0f);
+      }
+      if (differentSign) {
+        const float denom = dp - dpPrev;
+        if (dp < 0.0f)  // going out
+          out.push_back(-dp < dpPrev ? lerp(dp / denom, v, prev) : lerp(-dpPrev / denom, prev, v));
+        else  // coming back in
+          out.push_back(-dpPrev < dp ? lerp(-dpPrev / denom, prev, v) : lerp(dp / denom, v, prev));
+      }
+      prev = v;
+      dpPrev = dp;
+    }
+    in.swap(out);
+  }
+  return in;
+}
+
 }  // namespace
+
+// llvmpipe's depth for the fragments of one MPR triangle, bit for bit.
+//
+// llvmpipe does not interpolate the exact plane: it sets up a0, dz/dx, dz/dy
+// in single precision at the window origin and evaluates them per pixel, so
+// its depths drift from the exact plane by up to about +-1.5 units of 2^24;
+// this reproduces that arithmetic, and the triangles it is applied to:
+//  - window coordinates: see toLlWindow;
+//  - the triangles llvmpipe sets up: those of Mesa's draw module, clipped as
+//    clipLikeDraw does and fanned as draw_pipe_clip.c emit_poly does,
+//    (p[i-1], p[i], p[0]); a clockwise one (in llvmpipe's y-down space) is
+//    set up as (v1, v0, v2) (lp_setup_tri.c triangle_both/triangle_cw, last
+//    vertex provoking);
+//  - the plane: lp_state_setup.c init_args/calc_coef4, single precision,
+//    unfused: ooa = 1 / (dx01 * dy20 - dy01 * dx20),
+//    dadx = da01 * (dy20 * ooa) - da20 * (dy01 * ooa),
+//    dady = da20 * (dx01 * ooa) - da01 * (dx20 * ooa),
+//    a0 = z0 - (dadx * (x0 - 0.5) + dady * (y0 - 0.5));
+//  - per pixel: lp_bld_interp.c attribs_update_simple, a0 + x * dadx +
+//    y * dady as two fused lp_build_fmuladd (this CPU has FMA), x and y the
+//    integer pixel corner in llvmpipe's space.
+// A clipped triangle becomes several llvmpipe triangles whose fan differs
+// from MPR's, so each pixel takes the plane of the one containing its centre.
+struct LlvmpipeDepth {
+  struct Triangle {
+    float a0, dzdx, dzdy;
+    std::array<LlWindow, 3> v;  // in the order set up, counter-clockwise in y-down space
+  };
+
+  WindowTransform window;
+  const std::vector<ClipPlane>* userPlanes;
+  std::vector<Triangle> triangles;
+
+  // Adds the triangles draw and llvmpipe make of (a, b, c), given in the
+  // order llvmpipe receives it.
+  void add(const Vec4& a, const Vec4& b, const Vec4& c) {
+    const std::array<DrawVertex, 3> tri = {DrawVertex{a, true}, {b, true}, {c, true}};
+    // draw_pipe_clip.c clip_tri: inside every plane passes as it is; outside
+    // one plane with all three vertices is dropped; else clipped and fanned.
+    const std::uint32_t ma = drawClipMask(a, *userPlanes), mb = drawClipMask(b, *userPlanes),
+                        mc = drawClipMask(c, *userPlanes);
+    if ((ma | mb | mc) == 0) return setUp(tri[0], tri[1], tri[2]);
+    if ((ma & mb & mc) != 0) return;
+    const std::vector<DrawVertex> poly = clipLikeDraw(tri, ma | mb | mc, *userPlanes);
+    for (std::size_t i = 2; i < poly.size(); ++i) setUp(poly[i - 1], poly[i], poly[0]);
+  }
+
+  float at(int x, int yDown) const {
+    const Triangle& t = triangles.size() == 1 ? triangles[0] : containing(x + 0.5, yDown + 0.5);
+    return std::fma(t.dzdy, static_cast<float>(yDown), std::fma(t.dzdx, static_cast<float>(x), t.a0));
+  }
+
+ private:
+  void setUp(const DrawVertex& d0, const DrawVertex& d1, const DrawVertex& d2) {
+    LlWindow p0 = toLlWindow(d0, window), p1 = toLlWindow(d1, window);
+    const LlWindow p2 = toLlWindow(d2, window);
+    // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions.
+    auto fixed = [](float f) { return static_cast<std::int64_t>(std::nearbyint(f * 256.0f)); };
+    const std::int64_t area = (fixed(p0.x) - fixed(p1.x)) * (fixed(p2.y) - fixed(p0.y)) -
+                              (fixed(p2.x) - fixed(p0.x)) * (fixed(p0.y) - fixed(p1.y));
+    if (area == 0) return;  // llvmpipe draws nothing
+    if (area < 0) std::swap(p0, p1);
+    const float dx01 = p0.x - p1.x, dy01 = p0.y - p1.y;
+    const float dx20 = p2.x - p0.x, dy20 = p2.y - p0.y;
+    const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
+    const float dx20ooa = dx20 * ooa, dy20ooa = dy20 * ooa;
+    const float dx01ooa = dx01 * ooa, dy01ooa = dy01 * ooa;
+    const float dz01 = p0.z - p1.z, dz20 = p2.z - p0.z;
+    Triangle t;
+    t.dzdx = dz01 * dy20ooa - dz20 * dy01ooa;
+    t.dzdy = dz20 * dx01ooa - dz01 * dx20ooa;
+    t.a0 = p0.z - (t.dzdx * (p0.x - 0.5f) + t.dzdy * (p0.y - 0.5f));
+    t.v = {p0, p1, p2};
+    triangles.push_back(t);
+  }
+
+  // The triangle whose edges are farthest outwards from the point: the one
+  // containing it, or the nearest where a pixel centre MPR covers falls just
+  // outside llvmpipe's polygon.
+  const Triangle& containing(double px, double py) const {
+    const Triangle* best = &triangles[0];
+    double bestDistance = -std::numeric_limits<double>::infinity();
+    for (const Triangle& t : triangles) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < 3; ++i) {
+        const LlWindow& a = t.v[i];
+        const LlWindow& b = t.v[(i + 1) % 3];
+        const double ex = static_cast<double>(b.x) - a.x, ey = static_cast<double>(b.y) - a.y;
+        const double length = std::hypot(ex, ey);
+        if (length > 0.0) nearest = std::min(nearest, (ex * (a.y - py) - ey * (a.x - px)) / length);
+      }
+      if (nearest > bestDistance) {
+        bestDistance = nearest;
+        best = &t;
+      }
+    }
+    return *best;
+  }
+};
 
 void GLContext::begin(GLenumValue mode) {
   if (inBegin_) return setError(GL_INVALID_OPERATION);
@@ -42,8 +252,13 @@ void GLContext::vertex4f(float x, float y, float z, float w) {
 
 void GLContext::rectf(float x1, float y1, float x2, float y2) {
   if (!checkOutsideBeginEnd()) return;
-  // GL 1.1 section 2.9: exactly glBegin(GL_POLYGON) with four vertices.
-  begin(GL_POLYGON);
+  // GL 1.1 section 2.9 describes glBegin(GL_POLYGON) with these four
+  // vertices; Mesa (main/draw.c _mesa_Rectf) issues GL_QUADS, which covers
+  // the same pixels but is set up as triangles (0, 1, 2), (0, 2, 3) rather
+  // than (1, 2, 0), (2, 3, 0): llvmpipe's depths of a tilted rectangle follow
+  // that order. The four vertices share one colour, so the provoking vertex
+  // does not matter.
+  begin(GL_QUADS);
   vertex4f(x1, y1, 0, 1);
   vertex4f(x2, y1, 0, 1);
   vertex4f(x2, y2, 0, 1);
@@ -53,8 +268,12 @@ void GLContext::rectf(float x1, float y1, float x2, float y2) {
 
 ClipVertex GLContext::processVertex(const Vertex& v) const {
   ClipVertex out;
-  // Position through the combined matrix, as Mesa's fixed-function program.
-  out.clip = mvp_ * v.object;
+  // Position through the combined matrix, as Mesa's fixed-function program
+  // computes it on llvmpipe: each row summed left to right, unfused,
+  // ((m0 x + m1 y) + m2 z) + m3 w (glm would add the two halves pairwise,
+  // which differs in the last bit; measured against llvmpipe's depths).
+  const Vec4& o = v.object;
+  out.clip = ((mvp_[0] * o.x + mvp_[1] * o.y) + mvp_[2] * o.z) + mvp_[3] * o.w;
   const bool needEye = lightingEnabled_ || fog_.enabled;
   const Vec4 eye = needEye ? modelview_.top() * v.object : Vec4(0.0f);
 
@@ -114,16 +333,38 @@ void GLContext::end() {
   processed.reserve(vertices_.size());
   for (const Vertex& v : vertices_) processed.push_back(processVertex(v));
 
+  // The triangles llvmpipe sets up are MPR's, except for quads when Mesa's
+  // draw module runs its pipeline, which it does when any vertex of the draw
+  // lies outside a clip plane: then draw_decompose_tmp.h splits each quad
+  // along the other diagonal, (0, 1, 3) and (1, 2, 3), where the plain path
+  // (lp_setup_vbuf.c) draws (0, 1, 2) and (0, 2, 3) as MPR does. (Mesa merges
+  // consecutive glBegin(GL_QUADS) blocks into one draw; this looks at one.)
+  const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
+  bool anyOutside = false;
+  for (const ClipVertex& cv : processed) anyOutside = anyOutside || drawClipMask(cv.clip, userPlanes) != 0;
+  const bool quadsOtherDiagonal = primitive_ == PrimitiveType::Quads && anyOutside;
+  const WindowTransform window{vpScaleX_, vpTransX_, vpScaleY_, vpTransY_,
+                               static_cast<float>((depthFar_ - depthNear_) / 2.0),
+                               static_cast<float>((depthNear_ + depthFar_) / 2.0), fb_.height()};
+
   for (const AssembledTriangle& t : tris) {
     std::array<ClipVertex, 3> tri = {processed[t.v[0]], processed[t.v[1]], processed[t.v[2]]};
     if (flatShading_)
       for (ClipVertex& cv : tri)
         for (int i = 0; i < 8; ++i) cv.attr[i] = processed[t.provoking].attr[i];
-    drawTriangle(tri);
+    LlvmpipeDepth depth{window, &userPlanes, {}};
+    if (quadsOtherDiagonal) {
+      const std::uint32_t q = t.v[0];  // MPR's quad triangles both start at the quad's first vertex
+      depth.add(processed[q].clip, processed[q + 1].clip, processed[q + 3].clip);
+      depth.add(processed[q + 1].clip, processed[q + 2].clip, processed[q + 3].clip);
+    } else {
+      depth.add(tri[0].clip, tri[1].clip, tri[2].clip);
+    }
+    drawTriangle(tri, depth);
   }
 }
 
-void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri) {
+void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth) {
   ++counters_.triangles;
   // A vertex that is not finite drops its primitive and touches nothing else.
   for (const ClipVertex& v : tri) {
@@ -137,21 +378,18 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri) {
   for (const ClipVertex& v : poly)
     if (!(v.clip.w > 0.0f)) return;  // only the point (0,0,0,0) survives clipping with w <= 0
   ++counters_.trianglesDrawn;
-  for (size_t i = 1; i + 1 < poly.size(); ++i) rasterizeClippedTriangle(poly[0], poly[i], poly[i + 1]);
+  for (size_t i = 1; i + 1 < poly.size(); ++i) rasterizeClippedTriangle(poly[0], poly[i], poly[i + 1], depth);
 }
 
-void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
+void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                                         const LlvmpipeDepth& depth) {
   const ClipVertex* v[3] = {&a, &b, &c};
   std::array<SnappedVertex, 3> snapped;
-  double zWin[3], invW[3], xWin[3], yWin[3];
-  // Viewport depth transform: z_w = z_ndc * (f - n) / 2 + (n + f) / 2.
-  const float zScale = static_cast<float>((depthFar_ - depthNear_) / 2.0);
-  const float zTrans = static_cast<float>((depthNear_ + depthFar_) / 2.0);
+  double invW[3], xWin[3], yWin[3];
   for (int i = 0; i < 3; ++i) {
     const float iw = 1.0f / v[i]->clip.w;
     const float xw = v[i]->clip.x * iw * vpScaleX_ + vpTransX_;
     const float yw = v[i]->clip.y * iw * vpScaleY_ + vpTransY_;
-    zWin[i] = static_cast<double>(v[i]->clip.z * iw * zScale + zTrans);
     invW[i] = static_cast<double>(iw);
     xWin[i] = xw;
     yWin[i] = yw;
@@ -167,15 +405,21 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   const PixelRect region = drawRegion();
   if (region.empty()) return;
   const PixelBounds bounds{region.x0, region.y0, region.x1, region.y1};
-  // Coverage is decided on the snapped vertices; attributes are interpolated
-  // on the unsnapped window positions, as llvmpipe sets up its planes, so
-  // that snapping (up to 1/512 pixel) does not tilt a steep depth plane.
+  // Where llvmpipe's clipping dropped what MPR's kept, MPR's own triangle
+  // stands in (it is then at most a few pixels of an edge).
+  LlvmpipeDepth fallback{depth.window, depth.userPlanes, {}};
+  if (depth.triangles.empty()) fallback.add(a.clip, b.clip, c.clip);
+  const LlvmpipeDepth& depthPlanes = depth.triangles.empty() ? fallback : depth;
+  // Coverage is decided on the snapped vertices; colours are interpolated on
+  // the unsnapped window positions, as llvmpipe sets up its planes (depth
+  // follows llvmpipe's own arithmetic, see LlvmpipeDepth).
   const double ex1 = xWin[1] - xWin[0], ey1 = yWin[1] - yWin[0];
   const double ex2 = xWin[2] - xWin[0], ey2 = yWin[2] - yWin[0];
   const double exactArea = ex1 * ey2 - ex2 * ey1;
   const bool useSnapped = !(std::fabs(exactArea) > 0.0);  // degenerate before snapping
   const double snappedArea = static_cast<double>(area > 0 ? area : -area);  // the weights' sum
   const float depthMaxF = static_cast<float>(fb_.profile().depthMax());
+  const int fbHeight = fb_.height();
   const bool needColor = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] ||
                          frag_.colorMask[3] || frag_.alpha.enabled;
   const bool needDepth = frag_.depth.enabled;
@@ -195,14 +439,12 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     }
     Fragment f{x, y, 0, Rgba8{0, 0, 0, 0}, 0.0f};
     if (needDepth) {
-      // Depth is linear in window space; quantised to the profile's width as
-      // llvmpipe converts to a unorm buffer: the float z times the float
-      // maximum, a single-precision product, rounded to nearest even.
-      // (llvmpipe evaluates the depth plane in single precision, we in double:
-      // on sloped planes the two may differ by a unit or so.)
-      const double z = std::clamp(zWin[0] + b1 * (zWin[1] - zWin[0]) + b2 * (zWin[2] - zWin[0]), 0.0, 1.0);
-      const float product = static_cast<float>(z) * depthMaxF;
-      f.depth = static_cast<std::uint32_t>(std::nearbyint(product));
+      // llvmpipe's plane, evaluated as its fragment shader does, then
+      // quantised as it converts to a unorm buffer: the float z times the
+      // float maximum, a single-precision product, rounded to nearest even.
+      const float z =
+          depthPlanes.triangles.empty() ? 0.0f : std::clamp(depthPlanes.at(x, fbHeight - 1 - y), 0.0f, 1.0f);
+      f.depth = static_cast<std::uint32_t>(std::nearbyint(z * depthMaxF));
     }
     if (needColor) {
       // Perspective-correct: interpolate attr/w and 1/w.
