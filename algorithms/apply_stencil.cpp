@@ -43,7 +43,13 @@ void stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l)
 }
 
 void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l) {
-  stencil(gl, s, l);
+  apply_to_screen(gl, translateStencil(s, l));
+}
+
+void apply_to_screen(GLCommandStream& gl, const GLStencilSetting& g) {
+  gl.call(GLCall::StencilFunc, {g.func, static_cast<int>(g.ref), static_cast<int>(g.valueMask)});
+  gl.call(GLCall::StencilMask, {static_cast<int>(g.writeMask)});
+  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", g.zpass});
   gl.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
   gl.call(GLCall::DepthMask, {"GL_FALSE"});
   gl.call(GLCall::Disable, {"GL_DEPTH_TEST"});

@@ -67,4 +67,8 @@ void stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& le
 // not restore them: every step of draw_window sets the state it draws with.
 void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& levels);
 
+// apply_to_screen() of Figure 4 with a GL stencil setting of the caller's
+// (face_light_stencil raises every shadow value by one this way).
+void apply_to_screen(GLCommandStream& gl, const GLStencilSetting& g);
+
 }  // namespace mpr

@@ -20,6 +20,7 @@
 
 #include "algorithms/apply_stencil.hpp"
 #include "algorithms/ref_face.hpp"
+#include "algorithms/ref_light.hpp"
 #include "algorithms/refraction.hpp"
 #include "algorithms/shadow_pass.hpp"
 #include "algorithms/view_camera.hpp"
@@ -36,6 +37,7 @@ class WindowRenderer {
                  const std::function<void(const DrawWindowProgress&)>& progress)
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
         shadows_(s, p) {
+    if (p.shadows) refLights_ = reflectedLights(s, faces_);
     counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
   }
 
@@ -84,23 +86,60 @@ class WindowRenderer {
     const bool shadowsHere = plan_.shadows && cam.level <= plan_.shadowDepth;
 
     pass("ambient", "ambient | draw_normal_objects(Camera, ZERO)  // ambient only");
-    draw_normal_objects(cam, zero, -1);
+    draw_normal_objects(cam, zero, nullptr);
     for (int light = 0; light < static_cast<int>(s_.lights.size()); ++light) {
       path_.push_back("light " + std::to_string(light));
       if (shadowsHere) {
         pass("apply_stencil", "render area to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)");
         apply_stencil(gl_, {PaperCompare::Equal, zero, PaperPass::Replace, lv_.shadZero}, lv_);
+        if (draw_ref_shadows(cam, light)) {
+          pass("apply_stencil", "after the ref shadows | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
+          apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, lv_.shadZero}, lv_);
+        }
         draw_all_shadows(cam, light);
         pass("apply_stencil", "back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)");
         apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, zero}, lv_);
       } else {
         pass("light", "lit | draw_normal_objects(Camera, ZERO)  // light " + std::to_string(light) + " added");
-        draw_normal_objects(cam, zero, light);
+        draw_normal_objects(cam, zero, &s_.lights[static_cast<std::size_t>(light)]);
       }
       path_.pop_back();
     }
     if (plan_.reflections && cam.level < plan_.recursionDepth) draw_ref_objects(cam, cam.level + 1);
     path_.pop_back();
+  }
+
+  // ---- draw_ref_shadows() ------------------------------------------------
+  // For each mirror face the light is in front of: its light volume marks
+  // where the virtual light reaches (face_light_stencil: every shadow value
+  // is raised by one, then the volume counted inverted, so inside the
+  // volume holds SHAD_ZERO again), the virtual light's shadows are counted
+  // (make_all_shadows(CAN'T_INTERSECT)), and the virtual light is added on
+  // what remains at SHAD_ZERO. Returns whether anything was drawn.
+  bool draw_ref_shadows(const ViewCamera& cam, int light) {
+    bool any = false;
+    for (const ReflectedLight& rl : refLights_) {
+      if (rl.light != light) continue;
+      any = true;
+      const RefFace& face = faces_[static_cast<std::size_t>(rl.face)];
+      path_.push_back("draw_ref_shadows > face " + std::to_string(rl.face) + " \"" +
+                      s_.objects[static_cast<std::size_t>(face.object)].name + "\"");
+      pass("light volume", "light volume | face_light_stencil(ref_face)");
+      apply_to_screen(gl_, {"GL_LEQUAL", lv_.shadMin, lv_.shadMin, lv_.max, "GL_INCR"});
+      setupView(cam);
+      counts_.zfailVolumes += countVolumes(gl_, {&rl.lightVolume}, cam, s_.camera, aspect(), lv_, true);
+      pass("shadow volume", "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT, ref_face)");
+      ++counts_.shadowPasses;
+      std::vector<const VolumeGeometry*> vols;
+      for (const VolumeGeometry& v : rl.shadows) vols.push_back(&v);
+      counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, aspect(), lv_, false);
+      pass("light", "lit by the virtual light | draw_normal_objects(Camera, SHAD_ZERO)");
+      draw_normal_objects(cam, lv_.shadZero, &rl.virtualLight);
+      pass("apply_stencil", "reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
+      apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, lv_.shadZero}, lv_);
+      path_.pop_back();
+    }
+    return any;
   }
 
   // ---- draw_all_shadows() -------------------------------------------------
@@ -124,7 +163,7 @@ class WindowRenderer {
                                  " or more shadow volumes, as many as the stencil bits above SHAD_ZERO count: "
                                  "their shadow may be wrong");
     pass("light", "lit outside the shadows | draw_normal_objects(Camera, SHAD_ZERO)");
-    draw_normal_objects(cam, lv_.shadZero, light);
+    draw_normal_objects(cam, lv_.shadZero, &s_.lights[static_cast<std::size_t>(light)]);
     pass("apply_stencil", "reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
     apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, lv_.shadZero}, lv_);
     path_.pop_back();
@@ -215,15 +254,15 @@ class WindowRenderer {
   }
 
   // ---- draw_normal_objects(Camera, STEN_VALUE) ----------------------------
-  // light < 0: the ambient pass (depth LEQUAL, writes depth); otherwise light
-  // `light` alone, added where depth is EQUAL (1997 §7.2).
-  void draw_normal_objects(const ViewCamera& cam, std::uint32_t stenValue, int light) {
+  // No light: the ambient pass (depth LEQUAL, writes depth); otherwise that
+  // light alone, added where depth is EQUAL (1997 §7.2).
+  void draw_normal_objects(const ViewCamera& cam, std::uint32_t stenValue, const PointLight* light) {
     if (usesStencil()) stencil(gl_, {PaperCompare::Equal, stenValue, PaperPass::Keep, stenValue}, lv_);
     setupView(cam);
     gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
     gl_.call(GLCall::Enable, {"GL_CULL_FACE"});
     gl_.call(GLCall::Enable, {"GL_LIGHTING"});
-    if (light < 0) {
+    if (!light) {
       gl_.call(GLCall::DepthFunc, {"GL_LEQUAL"});
       gl_.call(GLCall::DepthMask, {"GL_TRUE"});
       gl_.call(GLCall::Disable, {"GL_BLEND"});
@@ -236,12 +275,12 @@ class WindowRenderer {
       gl_.call(GLCall::BlendFunc, {"GL_ONE", "GL_ONE"});
       gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", 0.0f, 0.0f, 0.0f, 1.0f});
       gl_.call(GLCall::Enable, {"GL_LIGHT0"});
-      setLight(0, s_.lights[static_cast<std::size_t>(light)]);
+      setLight(0, *light);
     }
     if (cam.fog) {
       // The ambient pass fades to the material's colour, the light passes to
       // black: their sum is f * lit + (1 - f) * colour, fog of the whole.
-      const Vec3 c = light < 0 ? cam.fogColor : Vec3(0.0f);
+      const Vec3 c = !light ? cam.fogColor : Vec3(0.0f);
       gl_.call(GLCall::Enable, {"GL_FOG"});
       gl_.call(GLCall::Fogi, {"GL_FOG_MODE", "GL_LINEAR"});
       gl_.call(GLCall::Fogf, {"GL_FOG_START", cam.fogStart});
@@ -251,11 +290,11 @@ class WindowRenderer {
     for (const SceneObject& o : s_.objects) {
       const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
       if (isRefMaterial(m, s_.render)) continue;  // "for (each non_ref object)"
-      setMaterial(m, light < 0);
+      setMaterial(m, !light);
       drawTriangles(o.mesh);
     }
     if (cam.fog) gl_.call(GLCall::Disable, {"GL_FOG"});
-    if (light >= 0) ++counts_.lightPasses;
+    if (light) ++counts_.lightPasses;
   }
 
   // The view of `cam`: projection, modelview = lookAt * world, winding, clip plane.
@@ -463,6 +502,7 @@ class WindowRenderer {
   std::function<void(const DrawWindowProgress&)> progress_;
   std::vector<RefFace> faces_;
   ShadowPass shadows_;
+  std::vector<ReflectedLight> refLights_;
   std::vector<std::string> path_;
   DrawWindowCounts counts_;
 };

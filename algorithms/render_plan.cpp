@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "algorithms/ref_light.hpp"
 #include "framebuffer/profile.hpp"
 
 namespace mpr {
@@ -23,16 +24,22 @@ std::uint64_t RenderPlan::predictedViews() const {
   return total;
 }
 
-std::uint64_t RenderPlan::predictedShadowPasses() const {
-  if (!shadows) return 0;
+namespace {
+std::uint64_t shadowedViews(const RenderPlan& p) {
   std::uint64_t views = 0;
-  for (int l = 0; l <= std::min(shadowDepth, recursionDepth); ++l)
-    views += predictedViewsAtLevel(l);
-  return views * static_cast<std::uint64_t>(lights);
+  for (int l = 0; l <= std::min(p.shadowDepth, p.recursionDepth); ++l) views += p.predictedViewsAtLevel(l);
+  return p.shadows ? views : 0;
+}
+}  // namespace
+
+std::uint64_t RenderPlan::predictedShadowPasses() const {
+  // draw_all_shadows per light, and draw_ref_shadows per reflected light.
+  return shadowedViews(*this) * static_cast<std::uint64_t>(lights + reflectedLights);
 }
 
 std::uint64_t RenderPlan::predictedLightPasses() const {
-  return predictedViews() * static_cast<std::uint64_t>(lights);
+  return predictedViews() * static_cast<std::uint64_t>(lights) +
+         shadowedViews(*this) * static_cast<std::uint64_t>(reflectedLights);
 }
 
 double RenderPlan::paperEq7ShadowGenerations() const {
@@ -66,6 +73,7 @@ RenderPlan planRender(const Scene& scene, bool cull) {
 
   p.shadows = scene.render.shadows && p.lights > 0 && p.shadowCasters > 0;
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
+  if (p.shadows) p.reflectedLights = reflectedLightCount(scene, findRefFaces(scene));
   if (p.lights == 0) p.notes.push_back("no lights: the ambient pass only");
   else if (!scene.render.shadows) p.notes.push_back("shadows off: no shadow volumes");
   else if (p.shadowCasters == 0) p.notes.push_back("no object casts a shadow: no shadow volumes");
@@ -83,6 +91,9 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
   o << "plan (1994 Figure 4):\n";
   o << "  draw_window: ambient pass, then per light "
     << (p.shadows ? "shadow volumes (draw_all_shadows) and a lit pass" : "a lit pass (no shadows)") << "\n";
+  if (p.reflectedLights > 0)
+    o << "  draw_ref_shadows: " << p.reflectedLights
+      << " virtual lights (a light in front of a mirror face), each with its light volume and shadows\n";
   if (p.reflections)
     o << "  draw_ref_objects: " << p.refFaces << " faces, recursion depth " << p.recursionDepth
       << (p.shadows ? ", shadows in views up to level " + std::to_string(p.shadowDepth) : std::string()) << "\n";

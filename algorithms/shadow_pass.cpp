@@ -20,16 +20,19 @@ ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : scene_(scen
     }
 }
 
-void ShadowPass::drawTriangles(GLCommandStream& gl, const std::vector<std::array<Vec3, 3>>& tris) const {
+namespace {
+
+void drawTriangles(GLCommandStream& gl, const std::vector<std::array<Vec3, 3>>& tris) {
   gl.call(GLCall::Begin, {"GL_TRIANGLES"});
   for (const auto& t : tris)
     for (const Vec3& p : t) gl.call(GLCall::Vertex3f, {p.x, p.y, p.z});
   gl.call(GLCall::End, {});
 }
 
-std::uint64_t ShadowPass::drawVolumes(GLCommandStream& gl, int light, const ViewCamera& view, const Camera& camera,
-                                      const StencilLevels& lv) {
-  const std::vector<VolumeGeometry>& vols = volumes_[static_cast<std::size_t>(light)];
+}  // namespace
+
+std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGeometry*>& vols, const ViewCamera& view,
+                           const Camera& camera, double aspect, const StencilLevels& lv, bool inverted) {
   // Count only where the stencil holds a shadow value: the top bit
   // (SHAD_MIN) set, i.e. SHAD_MIN <= stored & SHAD_MIN.
   gl.call(GLCall::StencilFunc, {"GL_LEQUAL", static_cast<int>(lv.shadMin), static_cast<int>(lv.shadMin)});
@@ -44,26 +47,26 @@ std::uint64_t ShadowPass::drawVolumes(GLCommandStream& gl, int light, const View
   // Volumes the near plane cuts are counted behind the surface (z-fail);
   // the eye and the near rectangle are taken into the real scene, where the
   // volumes are.
-  const std::array<Vec3, 4> near = nearRectangle(
-      camera, view.world, static_cast<double>(scene_.render.width) / static_cast<double>(scene_.render.height));
+  const std::array<Vec3, 4> near = nearRectangle(camera, view.world, aspect);
   const DVec3 eye = view.eye(camera);
   std::vector<const VolumeGeometry*> zpass, zfail;
-  for (const VolumeGeometry& v : vols)
-    (volumeNeedsZFail(v, Vec3(eye), near) ? zfail : zpass).push_back(&v);
+  for (const VolumeGeometry* v : vols) (volumeNeedsZFail(*v, Vec3(eye), near) ? zfail : zpass).push_back(v);
+  const char* up = inverted ? "GL_DECR" : "GL_INCR";
+  const char* down = inverted ? "GL_INCR" : "GL_DECR";
   if (!zpass.empty()) {
     gl.call(GLCall::CullFace, {"GL_BACK"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", "GL_INCR"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", up});
     for (const VolumeGeometry* v : zpass) drawTriangles(gl, v->sides);
     gl.call(GLCall::CullFace, {"GL_FRONT"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", "GL_DECR"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", down});
     for (const VolumeGeometry* v : zpass) drawTriangles(gl, v->sides);
   }
   if (!zfail.empty()) {
     gl.call(GLCall::CullFace, {"GL_FRONT"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_INCR", "GL_KEEP"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", up, "GL_KEEP"});
     for (const VolumeGeometry* v : zfail) drawTriangles(gl, v->sides), drawTriangles(gl, v->caps);
     gl.call(GLCall::CullFace, {"GL_BACK"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_DECR", "GL_KEEP"});
+    gl.call(GLCall::StencilOp, {"GL_KEEP", down, "GL_KEEP"});
     for (const VolumeGeometry* v : zfail) drawTriangles(gl, v->sides), drawTriangles(gl, v->caps);
   }
   gl.call(GLCall::CullFace, {"GL_BACK"});
@@ -71,6 +74,14 @@ std::uint64_t ShadowPass::drawVolumes(GLCommandStream& gl, int light, const View
   gl.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
   gl.call(GLCall::DepthMask, {"GL_TRUE"});
   return zfail.size();
+}
+
+std::uint64_t ShadowPass::drawVolumes(GLCommandStream& gl, int light, const ViewCamera& view, const Camera& camera,
+                                      const StencilLevels& lv) {
+  std::vector<const VolumeGeometry*> vols;
+  for (const VolumeGeometry& v : volumes_[static_cast<std::size_t>(light)]) vols.push_back(&v);
+  return countVolumes(gl, vols, view, camera,
+                      static_cast<double>(scene_.render.width) / static_cast<double>(scene_.render.height), lv, false);
 }
 
 }  // namespace mpr

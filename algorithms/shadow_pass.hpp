@@ -30,6 +30,14 @@ struct VolumeGeometry {
   std::string object;
 };
 
+// Counts `volumes` into the stencil as seen by `view`, only on pixels holding a
+// shadow value: z-pass, or z-fail with caps where the near rectangle is in or
+// across a volume. `inverted` swaps increment and decrement (light volumes,
+// whose inside must end one below the outside). Returns the z-fail count.
+std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGeometry*>& volumes,
+                           const ViewCamera& view, const Camera& camera, double aspect, const StencilLevels& levels,
+                           bool inverted);
+
 class ShadowPass {
  public:
   ShadowPass(const Scene& scene, const RenderPlan& plan);
@@ -42,7 +50,6 @@ class ShadowPass {
   const std::vector<VolumeGeometry>& volumes(int light) const { return volumes_[static_cast<std::size_t>(light)]; }
 
  private:
-  void drawTriangles(GLCommandStream& gl, const std::vector<std::array<Vec3, 3>>& tris) const;
   const Scene& scene_;
   std::vector<std::vector<VolumeGeometry>> volumes_;  // per light
   std::vector<std::string> warnings_;
