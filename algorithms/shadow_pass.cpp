@@ -32,7 +32,8 @@ void drawTriangles(GLCommandStream& gl, const std::vector<std::array<Vec3, 3>>& 
 }  // namespace
 
 std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGeometry*>& vols, const ViewCamera& view,
-                           const Camera& camera, double aspect, const StencilLevels& lv, bool inverted) {
+                           const Camera& camera, double aspect, const StencilLevels& lv, bool inverted,
+                           bool alwaysZFail) {
   // Count only where the stencil holds a shadow value: the top bit
   // (SHAD_MIN) set, i.e. SHAD_MIN <= stored & SHAD_MIN.
   gl.call(GLCall::StencilFunc, {"GL_LEQUAL", static_cast<int>(lv.shadMin), static_cast<int>(lv.shadMin)});
@@ -50,7 +51,8 @@ std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGe
   const std::array<Vec3, 4> near = nearRectangle(camera, view.world, aspect);
   const DVec3 eye = view.eye(camera);
   std::vector<const VolumeGeometry*> zpass, zfail;
-  for (const VolumeGeometry* v : vols) (volumeNeedsZFail(*v, Vec3(eye), near) ? zfail : zpass).push_back(v);
+  for (const VolumeGeometry* v : vols)
+    (alwaysZFail || volumeNeedsZFail(*v, Vec3(eye), near) ? zfail : zpass).push_back(v);
   const char* up = inverted ? "GL_DECR" : "GL_INCR";
   const char* down = inverted ? "GL_INCR" : "GL_DECR";
   if (!zpass.empty()) {

@@ -33,10 +33,12 @@ struct VolumeGeometry {
 // Counts `volumes` into the stencil as seen by `view`, only on pixels holding a
 // shadow value: z-pass, or z-fail with caps where the near rectangle is in or
 // across a volume. `inverted` swaps increment and decrement (light volumes,
-// whose inside must end one below the outside). Returns the z-fail count.
+// whose inside must end one below the outside); `alwaysZFail` counts every
+// volume behind the surface with its caps (light volumes: their near cap is a
+// mirror, which is not in the depth buffer). Returns the z-fail count.
 std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGeometry*>& volumes,
                            const ViewCamera& view, const Camera& camera, double aspect, const StencilLevels& levels,
-                           bool inverted);
+                           bool inverted, bool alwaysZFail = false);
 
 class ShadowPass {
  public:

@@ -1,0 +1,65 @@
+// draw_ref_shadows for a mirror (1994 Figure 4, Figure 2): the light in front
+// of a mirror has a virtual light behind it, which lights only the face's
+// light volume.
+//
+// Hand derivation (16x16, camera at the origin looking down -z, fovy 90):
+// the mirror is a 0.5 x 0.5 quad at z = -1 facing -z (towards the wall at
+// z = -4, away from the camera, which sees it from behind: culled, and not
+// in the depth buffer, so the wall shows through). The light at (0, 0, -2)
+// is in front of it; its reflection through z = -1 is the virtual light at
+// the origin, so the light volume is the pyramid from the camera's own eye
+// through the mirror: on the wall (scale 4) x, y in [-1, 1], window 6..10,
+// pixels 6..9 in x and y. face_light_stencil raises every shadow value to
+// 193 and counts the volume inverted, so inside it holds SHAD_ZERO = 192.
+#include <gtest/gtest.h>
+
+#include "algorithms/scene_renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/stencil_picture.hpp"
+
+namespace mpr {
+namespace {
+
+TEST(RefLight, TheMirrorsLightVolumeOnTheWall) {
+  const Scene scene = loadSceneText(R"(
+camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov: 90, near: 0.1, far: 20}
+lights: [{position: [0, 0, -2]}]
+materials: {mirror: {kind: mirror, reflectance: 0.8}}
+objects:
+  - {name: wall, primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
+  - {name: mirror, primitive: quad, translate: [0, 0, -1], rotate: [180, 0, 1, 0], scale: 0.5, material: mirror}
+  - {name: pebble, primitive: box, translate: [3, 3, -3.5], scale: 0.1}
+render: {width: 16, height: 16, shadow_recursion_depth: 0}
+)", "mirror-light.yaml");
+  GLContext gl(16, 16, indigoProfile());
+  GLCommandStream stream(gl, false);
+  std::vector<std::uint8_t> afterVolume;
+  std::vector<Rgba8> beforeLight, afterLight;
+  stream.onPassEnd([&](const std::string& label) {
+    if (label.find("face_light_stencil") != std::string::npos) afterVolume = gl.framebuffer().stencilData();
+    if (label.find("make_all_shadows(CAN'T_INTERSECT") != std::string::npos) beforeLight = gl.framebuffer().colorData();
+    if (label.find("lit by the virtual light") != std::string::npos) afterLight = gl.framebuffer().colorData();
+  });
+  const RenderResult r = renderScene(scene, stream);
+  EXPECT_EQ(r.plan.reflectedLights, 1);
+  ASSERT_EQ(afterVolume.size(), 256u);
+  GLContext probe(16, 16, indigoProfile());
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) probe.framebuffer().stencil(x, y) = afterVolume[static_cast<std::size_t>(y * 16 + x)];
+  std::string picture = "\n";
+  for (int y = 15; y >= 0; --y) {
+    for (int x = 0; x < 16; ++x) picture += (x >= 6 && x <= 9 && y >= 6 && y <= 9) ? "192 " : "193 ";
+    picture += "\n";
+  }
+  EXPECT_TRUE(test::stencilMatches(probe.framebuffer(), 0, 0, picture));
+  // The virtual light adds light inside the volume only.
+  for (std::size_t i = 0; i < 256; ++i) {
+    const int x = static_cast<int>(i % 16), y = static_cast<int>(i / 16);
+    const bool inside = x >= 6 && x <= 9 && y >= 6 && y <= 9;
+    if (inside) EXPECT_GT(afterLight[i][0], beforeLight[i][0]) << x << "," << y;
+    else EXPECT_EQ(afterLight[i], beforeLight[i]) << x << "," << y;
+  }
+}
+
+}  // namespace
+}  // namespace mpr
