@@ -1,5 +1,5 @@
 #pragma once
-// `mpr step INPUT [--pixel X,Y | --state N]`: walk a GL script (or the GL
+// `mpr step INPUT [--pixel X,Y | --state N | --html DIR]`: walk a GL script (or the GL
 // calls of a scene's render) pass by pass.
 #include <CLI/CLI.hpp>
 
