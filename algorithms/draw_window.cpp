@@ -128,7 +128,8 @@ class WindowRenderer {
       apply_to_screen(gl_, {"GL_LEQUAL", lv_.shadMin, lv_.shadMin, lv_.max, "GL_INCR"});
       setupView(cam);
       countVolumes(gl_, {&rl.lightVolume}, cam, s_.camera, aspect(), lv_, true, true);
-      pass("shadow volume", "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT, ref_face)");
+      pass("shadow volume",
+           "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT, ref_face)");
       ++counts_.shadowPasses;
       std::vector<const VolumeGeometry*> vols;
       for (const VolumeGeometry& v : rl.shadows) vols.push_back(&v);

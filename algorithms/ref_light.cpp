@@ -1,5 +1,7 @@
 #include "algorithms/ref_light.hpp"
 
+#include <utility>
+
 #include "algorithms/shadow_geometry.hpp"
 
 namespace mpr {
@@ -42,15 +44,30 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
       }
       for (std::uint32_t i = 1; i + 1 < f.polygon.size(); ++i) face.mesh.triangles.push_back({0, i, i + 1});
       r.lightVolume = objectShadowVolume(face, r.virtualLight.position, bounds);
-      // CAN'T_INTERSECT: only casters wholly in front of the face shadow its light.
       for (const SceneObject& o : scene.objects) {
         if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render))
           continue;
         bool inFront = !o.mesh.positions.empty();
         for (const Vec3& v : o.mesh.positions) inFront = inFront && f.side(DVec3(v)) > 0.0;
         if (!inFront) continue;
+        // CAN'T_INTERSECT: the object stands in the reflected light itself.
         VolumeGeometry v = objectShadowVolume(o, r.virtualLight.position, bounds);
         if (!v.volume.empty()) r.shadows.push_back(std::move(v));
+        // MUST_INTERSECT: its shadow from the real light falls on the face, so
+        // the face reflects that shadow into its light volume: the volume of
+        // the object's mirror image (behind the face) from the virtual light.
+        if (shadowCrossesFace(o.mesh, f.polygon, light.position)) {
+          SceneObject image = o;
+          image.name = o.name + " (mirror image)";
+          for (Vec3& p : image.mesh.positions) {
+            const DVec3 q(p);
+            p = Vec3(q - 2.0 * f.side(q) * f.normal);
+          }
+          for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
+          VolumeGeometry m = objectShadowVolume(image, r.virtualLight.position, bounds);
+          m.alwaysZFail = true;
+          if (!m.volume.empty()) r.shadows.push_back(std::move(m));
+        }
       }
       out.push_back(std::move(r));
     }

@@ -3,9 +3,12 @@
 // front of a mirror face has a virtual light behind it (ref_light: the light
 // reflected through the face's plane), which lights only the face's light
 // volume — the pyramid from the virtual light through the face, beyond the
-// face (face_light_stencil) — and casts the shadows of the objects in front
-// of the face (CAN'T_INTERSECT: their shadow volumes cannot cross the face).
-// So a mirror lights the room (the paper's Figure 2, Plate 3).
+// face (face_light_stencil) — and is shadowed by the objects in front of
+// the face, in two ways: standing in the reflected light (CAN'T_INTERSECT:
+// their volumes from the virtual light cannot cross the face), and shadowing
+// the face itself from the real light (MUST_INTERSECT: the face reflects that
+// shadow, which is the volume of the object's mirror image from the virtual
+// light). So a mirror lights the room (the paper's Figure 2, Plate 3).
 #include <vector>
 
 #include "algorithms/ref_face.hpp"
@@ -18,7 +21,7 @@ struct ReflectedLight {
   int light = 0, face = 0;
   PointLight virtualLight;                // reflected position, colour x reflectance
   VolumeGeometry lightVolume;             // the face's light volume
-  std::vector<VolumeGeometry> shadows;    // from the virtual light, casters in front of the face
+  std::vector<VolumeGeometry> shadows;    // from the virtual light: CAN'T_ and MUST_INTERSECT casters
 };
 
 // Every (light, mirror face) pair with the light strictly in front of the

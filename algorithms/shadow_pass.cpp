@@ -52,7 +52,7 @@ std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGe
   const DVec3 eye = view.eye(camera);
   std::vector<const VolumeGeometry*> zpass, zfail;
   for (const VolumeGeometry* v : vols)
-    (alwaysZFail || volumeNeedsZFail(*v, Vec3(eye), near) ? zfail : zpass).push_back(v);
+    (alwaysZFail || v->alwaysZFail || volumeNeedsZFail(*v, Vec3(eye), near) ? zfail : zpass).push_back(v);
   const char* up = inverted ? "GL_DECR" : "GL_INCR";
   const char* down = inverted ? "GL_INCR" : "GL_DECR";
   if (!zpass.empty()) {

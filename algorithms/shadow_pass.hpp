@@ -27,6 +27,9 @@ struct VolumeGeometry {
   ShadowVolume volume;
   std::vector<std::array<Vec3, 3>> sides, caps;
   bool closed = true;
+  // Counted by z-fail with caps in every view: the caster is not drawn (a
+  // mirror image), so nothing hides the light cap as z-pass assumes.
+  bool alwaysZFail = false;
   std::string object;
 };
 

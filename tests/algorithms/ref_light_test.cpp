@@ -61,5 +61,51 @@ render: {width: 16, height: 16, shadow_recursion_depth: 0}
   }
 }
 
+// MUST_INTERSECT: a small box between the light and the mirror shadows the
+// mirror, and the mirror reflects that shadow into its light volume. The
+// camera moves to x = 0.3 (still looking down -z; at the virtual light
+// itself every shadow would be seen edge-on), so a wall point x lands at
+// window 8 + 2 (x - 0.3). Light volume on the wall x, y in [-1, 1]: window x
+// 5.4..9.4, y 6..10: pixels x 5..8, y 6..9. The box's mirror image sits at
+// z = -0.5, half-size 0.05; from the virtual light at the origin its shadow
+// on the wall has half-size 0.4: window x 6.6..8.2, y 7.2..8.8: pixels x 7,
+// y 7..8. The box itself (window x 6.13..6.67, y 7.73..8.27) and its own
+// shadow from the virtual light (x 7.13..7.67, y 7.73..8.27) cover no pixel
+// centre.
+TEST(RefLight, AShadowOnTheMirrorIsReflectedIntoItsLightVolume) {
+  const Scene scene = loadSceneText(R"(
+camera: {position: [0.3, 0, 0], look_at: [0.3, 0, -1], fov: 90, near: 0.1, far: 20}
+lights: [{position: [0, 0, -2]}]
+materials: {mirror: {kind: mirror, reflectance: 0.8}}
+objects:
+  - {name: wall, primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
+  - {name: mirror, primitive: quad, translate: [0, 0, -1], rotate: [180, 0, 1, 0], scale: 0.5, material: mirror}
+  - {name: blocker, primitive: box, translate: [0, 0, -1.5], scale: 0.1}
+render: {width: 16, height: 16, shadow_recursion_depth: 0}
+)", "mirror-blocker.yaml");
+  GLContext gl(16, 16, indigoProfile());
+  GLCommandStream stream(gl, false);
+  std::vector<std::uint8_t> counted;
+  stream.onPassEnd([&](const std::string& label) {
+    if (label.find("make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT") != std::string::npos)
+      counted = gl.framebuffer().stencilData();
+  });
+  renderScene(scene, stream);
+  ASSERT_EQ(counted.size(), 256u);
+  GLContext probe(16, 16, indigoProfile());
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) probe.framebuffer().stencil(x, y) = counted[static_cast<std::size_t>(y * 16 + x)];
+  std::string picture = "\n";
+  for (int y = 15; y >= 0; --y) {
+    for (int x = 0; x < 16; ++x) {
+      const bool lit = x >= 5 && x <= 8 && y >= 6 && y <= 9;
+      const bool shadowed = x == 7 && y >= 7 && y <= 8;
+      picture += lit && !shadowed ? "192 " : "193 ";
+    }
+    picture += "\n";
+  }
+  EXPECT_TRUE(test::stencilMatches(probe.framebuffer(), 0, 0, picture));
+}
+
 }  // namespace
 }  // namespace mpr
