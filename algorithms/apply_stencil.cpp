@@ -28,6 +28,12 @@ std::string valueName(std::uint32_t v, const StencilLevels& l) {
   return std::to_string(v);
 }
 
+void setStencil(GLCommandStream& gl, const GLStencilSetting& g) {
+  gl.call(GLCall::StencilFunc, {g.func, static_cast<int>(g.ref), static_cast<int>(g.valueMask)});
+  gl.call(GLCall::StencilMask, {static_cast<int>(g.writeMask)});
+  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", g.zpass});
+}
+
 }  // namespace
 
 std::string paperStencilText(const PaperStencil& s, const StencilLevels& l) {
@@ -36,10 +42,7 @@ std::string paperStencilText(const PaperStencil& s, const StencilLevels& l) {
 }
 
 void stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l) {
-  const GLStencilSetting g = translateStencil(s, l);
-  gl.call(GLCall::StencilFunc, {g.func, static_cast<int>(g.ref), static_cast<int>(g.valueMask)});
-  gl.call(GLCall::StencilMask, {static_cast<int>(g.writeMask)});
-  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", g.zpass});
+  setStencil(gl, translateStencil(s, l));
 }
 
 void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l) {
@@ -47,9 +50,7 @@ void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLeve
 }
 
 void apply_to_screen(GLCommandStream& gl, const GLStencilSetting& g) {
-  gl.call(GLCall::StencilFunc, {g.func, static_cast<int>(g.ref), static_cast<int>(g.valueMask)});
-  gl.call(GLCall::StencilMask, {static_cast<int>(g.writeMask)});
-  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", g.zpass});
+  setStencil(gl, g);
   gl.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
   gl.call(GLCall::DepthMask, {"GL_FALSE"});
   gl.call(GLCall::Disable, {"GL_DEPTH_TEST"});

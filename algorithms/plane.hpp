@@ -11,9 +11,6 @@
 
 namespace mpr {
 
-using DVec3 = glm::dvec3;
-using DVec4 = glm::dvec4;
-
 // The plane dot(normal, x) + d = 0, normal of unit length. The same four
 // numbers are a glClipPlane equation: it keeps the side with
 // signedDistance >= 0.

@@ -3,6 +3,7 @@
 // of an object whose material is a mirror or refracts, with its plane.
 #include <vector>
 
+#include "algorithms/plane.hpp"
 #include "algorithms/view_camera.hpp"
 #include "scene/scene.hpp"
 
@@ -16,15 +17,13 @@ struct RefFace {
   DVec3 centre{0.0};
   MaterialKind kind = MaterialKind::Mirror;
   double ior = 1.0;            // refractive faces
-  // Whether looking through the face turns the camera and maps the image
-  // (refraction with ior != 1); mirrors and ior 1 do neither.
-  bool mapsImage() const { return kind != MaterialKind::Mirror && ior != 1.0; }
   bool refracts() const { return kind == MaterialKind::Refractive || kind == MaterialKind::Translucent; }
   float fogDistance = 1.0f;    // translucent faces
   Vec3 color{0.0f};            // the material's diffuse colour (translucent fog colour)
 
   // > 0 in front of the face, < 0 behind it.
   double side(DVec3 p) const { return glm::dot(normal, p) - offset; }
+  Plane plane() const { return Plane{normal, -offset}; }
 };
 
 // The materials whose faces the recursion looks through: mirrors (when

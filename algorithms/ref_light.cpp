@@ -30,8 +30,7 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
       r.light = static_cast<int>(l);
       r.face = static_cast<int>(fi);
       r.virtualLight = light;
-      const DVec3 p(light.position);
-      r.virtualLight.position = Vec3(p - 2.0 * f.side(p) * f.normal);
+      r.virtualLight.position = reflectPoint(light.position, f.plane());
       const SceneObject& mirror = scene.objects[static_cast<std::size_t>(f.object)];
       r.virtualLight.color = light.color * scene.materials[static_cast<std::size_t>(mirror.material)].reflectance;
       // The light volume is the face's own shadow volume from the virtual
@@ -59,10 +58,7 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
         if (shadowCrossesFace(o.mesh, f.polygon, light.position)) {
           SceneObject image = o;
           image.name = o.name + " (mirror image)";
-          for (Vec3& p : image.mesh.positions) {
-            const DVec3 q(p);
-            p = Vec3(q - 2.0 * f.side(q) * f.normal);
-          }
+          for (Vec3& p : image.mesh.positions) p = reflectPoint(p, f.plane());
           for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
           VolumeGeometry m = objectShadowVolume(image, r.virtualLight.position, bounds);
           m.alwaysZFail = true;

@@ -56,7 +56,8 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   p.cull = cull;
   p.levels = stencilLevelsFor(findProfile(scene.render.profile).value_or(indigoProfile()));
   p.lights = static_cast<int>(scene.lights.size());
-  for (const RefFace& f : findRefFaces(scene)) {
+  const std::vector<RefFace> faces = findRefFaces(scene);
+  for (const RefFace& f : faces) {
     ++p.refFaces;
     if (f.refracts()) ++p.refractingFaces;
   }
@@ -73,7 +74,7 @@ RenderPlan planRender(const Scene& scene, bool cull) {
 
   p.shadows = scene.render.shadows && p.lights > 0 && p.shadowCasters > 0;
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
-  if (p.shadows) p.reflectedLights = reflectedLightCount(scene, findRefFaces(scene));
+  if (p.shadows) p.reflectedLights = reflectedLightCount(scene, faces);
   if (p.lights == 0) p.notes.push_back("no lights: the ambient pass only");
   else if (!scene.render.shadows) p.notes.push_back("shadows off: no shadow volumes");
   else if (p.shadowCasters == 0) p.notes.push_back("no object casts a shadow: no shadow volumes");

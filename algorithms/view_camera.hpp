@@ -10,11 +10,6 @@
 
 namespace mpr {
 
-using DMat4 = glm::dmat4;
-using DVec3 = glm::dvec3;
-using DVec4 = glm::dvec4;
-using DMat3 = glm::dmat3;
-
 struct ViewCamera {
   DMat4 world{1.0};        // real scene -> virtual scene
   bool mirrored = false;   // an odd number of reflections: the winding flips
