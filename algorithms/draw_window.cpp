@@ -110,8 +110,9 @@ class WindowRenderer {
   }
 
   // ---- draw_ref_shadows() ------------------------------------------------
-  // For each mirror face the light is in front of: its light volume marks
-  // where the virtual light reaches (face_light_stencil: every shadow value
+  // For each ref face the light reaches beyond (a mirror lit from the front,
+  // a refracting face below its critical angle; ref_light.hpp): its light
+  // volume marks where the virtual light reaches (face_light_stencil: every shadow value
   // is raised by one, then the volume counted inverted, so inside the
   // volume holds SHAD_ZERO again), the virtual light's shadows are counted
   // (make_all_shadows(CAN'T_INTERSECT)), and the virtual light is added on

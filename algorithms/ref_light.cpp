@@ -1,22 +1,74 @@
 #include "algorithms/ref_light.hpp"
 
+#include <cmath>
 #include <utility>
 
 #include "algorithms/shadow_geometry.hpp"
 
 namespace mpr {
-namespace {
 
-bool lightsFace(const PointLight& l, const RefFace& f) { return f.kind == MaterialKind::Mirror && f.side(DVec3(l.position)) > 0.0; }
+std::optional<DVec3> refLightPosition(const RefFace& f, DVec3 light) {
+  const double side = f.side(light);
+  if (!(side != 0.0) || !std::isfinite(side)) return std::nullopt;
+  if (f.kind == MaterialKind::Mirror) {
+    if (side < 0.0) return std::nullopt;  // lit from behind: a mirror passes nothing on
+    return reflectPoint(light, f.plane());
+  }
+  if (f.ior == 1.0) return light;  // no bending: the light itself, bit for bit
+  // Snell's law at the face centre, n on the light's side, eta = n_light / n_other.
+  const DVec3 n = side > 0.0 ? f.normal : -f.normal;
+  const double eta = side > 0.0 ? 1.0 / f.ior : f.ior;
+  const DVec3 toCentre = f.centre - light;
+  const double dist = glm::length(toCentre);
+  if (!(dist > 0.0)) return std::nullopt;
+  const DVec3 d = toCentre / dist;
+  const double cosI = std::min(1.0, -glm::dot(d, n));
+  const double sin2T = eta * eta * std::max(0.0, 1.0 - cosI * cosI);
+  if (sin2T >= 1.0) return std::nullopt;  // past the critical angle: wholly reflected
+  const DVec3 t = eta * d + (eta * cosI - std::sqrt(1.0 - sin2T)) * n;  // the refracted ray, unit
+  // Back along the refracted ray by the light's distance: the light turned
+  // about the centre by theta_i - theta_t.
+  return f.centre - glm::normalize(t) * dist;
+}
 
-}  // namespace
+DVec3 transferThroughFace(const RefFace& f, DVec3 light, DVec3 ref, DVec3 p) {
+  if (f.kind == MaterialKind::Mirror) return reflectPoint(p, f.plane());
+  return p + (ref - light) * (f.side(p) / f.side(light));
+}
 
 int reflectedLightCount(const Scene& scene, const std::vector<RefFace>& faces) {
   int n = 0;
   for (const PointLight& l : scene.lights)
-    for (const RefFace& f : faces) n += lightsFace(l, f);
+    for (const RefFace& f : faces) n += refLightPosition(f, DVec3(l.position)).has_value();
   return n;
 }
+
+namespace {
+
+// The face as a one-polygon object wound to face `towards` (a light volume is
+// the face's shadow volume from the virtual light).
+SceneObject faceFacing(const RefFace& f, const std::string& name, DVec3 towards) {
+  SceneObject face;
+  face.name = name;
+  const bool reverse = f.side(towards) < 0.0;
+  const std::size_t k = f.polygon.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    face.mesh.positions.push_back(f.polygon[reverse ? k - 1 - i : i]);
+    face.mesh.normals.push_back(Vec3(reverse ? -f.normal : f.normal));
+  }
+  for (std::uint32_t i = 1; i + 1 < k; ++i) face.mesh.triangles.push_back({0, i, i + 1});
+  return face;
+}
+
+// Every vertex strictly on the side `sign` of the face's plane.
+bool whollyOnSide(const Mesh& mesh, const RefFace& f, double sign) {
+  if (mesh.positions.empty()) return false;
+  for (const Vec3& v : mesh.positions)
+    if (!(f.side(DVec3(v)) * sign > 0.0)) return false;
+  return true;
+}
+
+}  // namespace
 
 std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces) {
   std::vector<ReflectedLight> out;
@@ -25,44 +77,44 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
     for (std::size_t fi = 0; fi < faces.size(); ++fi) {
       const RefFace& f = faces[fi];
       const PointLight& light = scene.lights[l];
-      if (!lightsFace(light, f)) continue;
+      const DVec3 lightPos(light.position);
+      const std::optional<DVec3> ref = refLightPosition(f, lightPos);
+      if (!ref) continue;
       ReflectedLight r;
       r.light = static_cast<int>(l);
       r.face = static_cast<int>(fi);
       r.virtualLight = light;
-      r.virtualLight.position = reflectPoint(light.position, f.plane());
-      const SceneObject& mirror = scene.objects[static_cast<std::size_t>(f.object)];
-      r.virtualLight.color = light.color * scene.materials[static_cast<std::size_t>(mirror.material)].reflectance;
-      // The light volume is the face's own shadow volume from the virtual
-      // light, which sits behind it: the face wound the other way round.
-      SceneObject face;
-      face.name = mirror.name + " (light volume)";
-      for (std::size_t i = 0; i < f.polygon.size(); ++i) {
-        face.mesh.positions.push_back(f.polygon[f.polygon.size() - 1 - i]);
-        face.mesh.normals.push_back(Vec3(-f.normal));
-      }
-      for (std::uint32_t i = 1; i + 1 < f.polygon.size(); ++i) face.mesh.triangles.push_back({0, i, i + 1});
-      r.lightVolume = objectShadowVolume(face, r.virtualLight.position, bounds);
+      r.virtualLight.position = Vec3(*ref);
+      const SceneObject& specular = scene.objects[static_cast<std::size_t>(f.object)];
+      const SceneMaterial& m = scene.materials[static_cast<std::size_t>(specular.material)];
+      r.virtualLight.color = light.color * (f.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance);
+      r.lightVolume = objectShadowVolume(faceFacing(f, specular.name + " (light volume)", *ref),
+                                         r.virtualLight.position, bounds);
+      // The light's side of the plane, and the side its light goes on to.
+      const double lightSide = f.side(lightPos) > 0.0 ? 1.0 : -1.0;
+      const double volumeSide = f.kind == MaterialKind::Mirror ? lightSide : -lightSide;
       for (const SceneObject& o : scene.objects) {
         if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render))
           continue;
-        bool inFront = !o.mesh.positions.empty();
-        for (const Vec3& v : o.mesh.positions) inFront = inFront && f.side(DVec3(v)) > 0.0;
-        if (!inFront) continue;
-        // CAN'T_INTERSECT: the object stands in the reflected light itself.
-        VolumeGeometry v = objectShadowVolume(o, r.virtualLight.position, bounds);
-        if (!v.volume.empty()) r.shadows.push_back(std::move(v));
-        // MUST_INTERSECT: its shadow from the real light falls on the face, so
-        // the face reflects that shadow into its light volume: the volume of
-        // the object's mirror image (behind the face) from the virtual light.
-        if (shadowCrossesFace(o.mesh, f.polygon, light.position)) {
+        // CAN'T_INTERSECT: the object stands where the light goes on.
+        if (whollyOnSide(o.mesh, f, volumeSide)) {
+          VolumeGeometry v = objectShadowVolume(o, r.virtualLight.position, bounds);
+          if (!v.volume.empty()) r.shadows.push_back(std::move(v));
+        }
+        // MUST_INTERSECT: between the light and the face, its shadow falls
+        // on the face and is passed on: the volume, from the virtual light,
+        // of the object carried through the face (a mirror's: its mirror
+        // image behind the face). The carried object is not drawn, so
+        // nothing hides its light cap: counted by z-fail.
+        if (whollyOnSide(o.mesh, f, lightSide) && shadowCrossesFace(o.mesh, f.polygon, light.position)) {
           SceneObject image = o;
-          image.name = o.name + " (mirror image)";
-          for (Vec3& p : image.mesh.positions) p = reflectPoint(p, f.plane());
-          for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
-          VolumeGeometry m = objectShadowVolume(image, r.virtualLight.position, bounds);
-          m.alwaysZFail = true;
-          if (!m.volume.empty()) r.shadows.push_back(std::move(m));
+          image.name = o.name + (f.kind == MaterialKind::Mirror ? " (mirror image)" : " (through the face)");
+          for (Vec3& p : image.mesh.positions) p = Vec3(transferThroughFace(f, lightPos, *ref, DVec3(p)));
+          if (f.kind == MaterialKind::Mirror)
+            for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
+          VolumeGeometry v = objectShadowVolume(image, r.virtualLight.position, bounds);
+          v.alwaysZFail = true;
+          if (!v.volume.empty()) r.shadows.push_back(std::move(v));
         }
       }
       out.push_back(std::move(r));

@@ -1,14 +1,24 @@
 #pragma once
-// draw_ref_shadows of the 1994 paper's Figure 4, for mirrors: each light in
-// front of a mirror face has a virtual light behind it (ref_light: the light
-// reflected through the face's plane), which lights only the face's light
-// volume — the pyramid from the virtual light through the face, beyond the
-// face (face_light_stencil) — and is shadowed by the objects in front of
-// the face, in two ways: standing in the reflected light (CAN'T_INTERSECT:
-// their volumes from the virtual light cannot cross the face), and shadowing
-// the face itself from the real light (MUST_INTERSECT: the face reflects that
-// shadow, which is the volume of the object's mirror image from the virtual
-// light). So a mirror lights the room (the paper's Figure 2, Plate 3).
+// draw_ref_shadows of the 1994 paper's Figure 4 ("Refractive shadows",
+// Figure 2, Plate 3): each light that reaches a ref face through it has a
+// virtual light (ref_light: where the light seems to be for what lies
+// beyond the face), which lights only the face's light volume — the pyramid
+// from the virtual light through the face, beyond it (face_light_stencil) —
+// and is shadowed in two ways: by objects standing in the light volume
+// (CAN'T_INTERSECT: their volumes from the virtual light cannot cross the
+// face), and by objects between the light and the face whose shadow falls on
+// the face and is passed on into the volume (MUST_INTERSECT). So a mirror
+// lights the room and a glass pane bends its shadow.
+//
+// - Mirror: the virtual light is the light reflected through the face's
+//   plane; the light volume lies on the light's side.
+// - Refracting face (the paper's change-of-medium model): the light turned
+//   about the face centre, in the plane of incidence, by theta_i - theta_t,
+//   the single-angle rule the refracted camera uses, with the ray from the
+//   light to the face centre as the incident ray (a point light has no view
+//   axis); past the critical angle no light passes. The light volume lies
+//   beyond the face.
+#include <optional>
 #include <vector>
 
 #include "algorithms/ref_face.hpp"
@@ -19,13 +29,27 @@ namespace mpr {
 
 struct ReflectedLight {
   int light = 0, face = 0;
-  PointLight virtualLight;                // reflected position, colour x reflectance
+  PointLight virtualLight;                // ref position, colour x reflectance or transmittance
   VolumeGeometry lightVolume;             // the face's light volume
   std::vector<VolumeGeometry> shadows;    // from the virtual light: CAN'T_ and MUST_INTERSECT casters
 };
 
-// Every (light, mirror face) pair with the light strictly in front of the
-// face, in light-then-face order.
+// ref_light(light, ref_face): the virtual light's position, or nothing when
+// the light does not reach beyond the face through it (a mirror lit from
+// behind or in its plane, a light in a refracting face's plane or past its
+// critical angle). Index of refraction 1 gives the light itself, exactly.
+std::optional<DVec3> refLightPosition(const RefFace& face, DVec3 light);
+
+// The map that carries a MUST_INTERSECT caster to the object whose shadow
+// from the virtual light `ref` crosses the face's plane where the caster's
+// shadow from `light` does: the affine map fixing the plane pointwise and
+// taking `light` to `ref`, P + (ref - light) dist(P) / dist(light), so lines
+// through the light become lines through the virtual light. For a mirror it
+// is the reflection itself (which is used, exactly); its determinant
+// dist(ref) / dist(light) is negative for a mirror (the winding turns).
+DVec3 transferThroughFace(const RefFace& face, DVec3 light, DVec3 ref, DVec3 p);
+
+// Every (light, ref face) pair with a virtual light, in light-then-face order.
 std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces);
 
 // How many such pairs a scene has (the planner's count).

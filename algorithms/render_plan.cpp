@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "algorithms/ref_light.hpp"
+#include "algorithms/shadow_pass.hpp"
 #include "framebuffer/profile.hpp"
 
 namespace mpr {
@@ -61,8 +62,7 @@ RenderPlan planRender(const Scene& scene, bool cull) {
     ++p.refFaces;
     if (f.refracts()) ++p.refractingFaces;
   }
-  for (const SceneObject& o : scene.objects)
-    if (o.castsShadows && !isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render)) ++p.shadowCasters;
+  for (const SceneObject& o : scene.objects) p.shadowCasters += shadowRole(o, scene) != ShadowRole::None;
 
   p.reflections = p.refFaces > 0 && scene.render.recursionDepth > 0;
   p.recursionDepth = p.reflections ? scene.render.recursionDepth : 0;
@@ -72,12 +72,16 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   if (!scene.render.refractions) p.notes.push_back("refractions off: refracting faces drawn as their own colour");
   if (!scene.render.translucency) p.notes.push_back("translucency off: translucent faces drawn as their own colour");
 
-  p.shadows = scene.render.shadows && p.lights > 0 && p.shadowCasters > 0;
+  // A mirror lit by a light lights the room through its light volume, a
+  // stencil count like a shadow's, so it needs the shadow passes even when
+  // nothing casts a shadow.
+  const int refLights = reflectedLightCount(scene, faces);
+  p.shadows = scene.render.shadows && p.lights > 0 && (p.shadowCasters > 0 || refLights > 0);
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
-  if (p.shadows) p.reflectedLights = reflectedLightCount(scene, faces);
+  if (p.shadows) p.reflectedLights = refLights;
   if (p.lights == 0) p.notes.push_back("no lights: the ambient pass only");
   else if (!scene.render.shadows) p.notes.push_back("shadows off: no shadow volumes");
-  else if (p.shadowCasters == 0) p.notes.push_back("no object casts a shadow: no shadow volumes");
+  else if (!p.shadows) p.notes.push_back("no object casts a shadow and no light reaches beyond a specular face: no shadow volumes");
   return p;
 }
 
@@ -94,7 +98,7 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
     << (p.shadows ? "shadow volumes (draw_all_shadows) and a lit pass" : "a lit pass (no shadows)") << "\n";
   if (p.reflectedLights > 0)
     o << "  draw_ref_shadows: " << p.reflectedLights
-      << " virtual lights (a light in front of a mirror face), each with its light volume and shadows\n";
+      << " virtual lights (a light reflected by a mirror face or refracted through a glass face), each with its light volume and shadows\n";
   if (p.reflections)
     o << "  draw_ref_objects: " << p.refFaces << " faces, recursion depth " << p.recursionDepth
       << (p.shadows ? ", shadows in views up to level " + std::to_string(p.shadowDepth) : std::string()) << "\n";

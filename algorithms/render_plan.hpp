@@ -17,8 +17,8 @@ struct RenderPlan {
   int lights = 0;
   int refFaces = 0;           // faces the recursion looks through (mirror and refracting)
   int refractingFaces = 0;    // of which refract (the rest reflect)
-  int shadowCasters = 0;      // non-specular objects with a shadow volume
-  int reflectedLights = 0;    // (light, mirror face) pairs with the light in front: draw_ref_shadows
+  int shadowCasters = 0;      // objects with a shadow volume: casters and refracting faces
+  int reflectedLights = 0;    // (light, ref face) pairs with a virtual light: draw_ref_shadows
   bool shadows = false;       // shadow volumes drawn (draw_all_shadows)
   bool reflections = false;   // draw_ref_objects runs
   int recursionDepth = 0;     // REF_LEVEL reaches this (0 without reflections)

@@ -5,17 +5,29 @@
 
 namespace mpr {
 
+ShadowRole shadowRole(const SceneObject& o, const Scene& scene) {
+  const SceneMaterial& m = scene.materials[static_cast<std::size_t>(o.material)];
+  if (!isRefMaterial(m, scene.render)) return o.castsShadows ? ShadowRole::Caster : ShadowRole::None;
+  const bool refracts = m.kind == MaterialKind::Refractive || m.kind == MaterialKind::Translucent;
+  return refracts ? ShadowRole::RefractingFace : ShadowRole::None;
+}
+
 ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : scene_(scene) {
   volumes_.resize(scene.lights.size());
   if (!plan.shadows) return;
   const BoundingSphere bounds = sceneBoundingSphere(scene);
   for (std::size_t l = 0; l < scene.lights.size(); ++l)
     for (const SceneObject& o : scene.objects) {
-      if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render)) continue;
+      const ShadowRole role = shadowRole(o, scene);
+      if (role == ShadowRole::None) continue;
       VolumeGeometry v = objectShadowVolume(o, scene.lights[l].position, bounds);
-      if (!v.closed && l == 0)
+      if (!v.closed && l == 0 && role == ShadowRole::Caster)
         warnings_.push_back("object '" + o.name + "' (line " + std::to_string(o.line) +
                             ") is not a closed mesh: its shadow volume is open and may count wrongly");
+      // A refracting face is not in the depth buffer (the view through it is),
+      // so a ray through it enters its volume by the light cap unseen, which
+      // z-pass does not count: counted behind the surface with caps instead.
+      v.alwaysZFail = role == ShadowRole::RefractingFace;
       if (!v.volume.empty()) volumes_[l].push_back(std::move(v));
     }
 }

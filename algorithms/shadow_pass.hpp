@@ -43,6 +43,15 @@ std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGe
                            const ViewCamera& view, const Camera& camera, double aspect, const StencilLevels& levels,
                            bool inverted, bool alwaysZFail = false);
 
+// What an object does in draw_all_shadows (make_all_shadows(ALWAYS)): a
+// caster (casts_shadows, not specular); a refracting face, whose light goes
+// on only through its light volume (draw_ref_shadows), so it shadows the
+// direct light like any caster ("the second pass ... captures the shadow
+// effect caused by the refractive surface itself", 1994 "Refractive
+// shadows"); or nothing (mirrors, non-casters).
+enum class ShadowRole { None, Caster, RefractingFace };
+ShadowRole shadowRole(const SceneObject& object, const Scene& scene);
+
 class ShadowPass {
  public:
   ShadowPass(const Scene& scene, const RenderPlan& plan);

@@ -1,4 +1,4 @@
-// draw_ref_shadows for a mirror (1994 Figure 4, Figure 2): the light in front
+// draw_ref_shadows (1994 Figure 4, Figure 2): the light in front
 // of a mirror has a virtual light behind it, which lights only the face's
 // light volume.
 //
@@ -13,8 +13,11 @@
 // 193 and counts the volume inverted, so inside it holds SHAD_ZERO = 192.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <optional>
 
+#include "algorithms/ref_light.hpp"
+#include "algorithms/render_plan.hpp"
 #include "algorithms/scene_renderer.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/stencil_picture.hpp"
@@ -101,6 +104,158 @@ render: {width: 16, height: 16, shadow_recursion_depth: 0}
     picture += "\n";
   }
   EXPECT_TRUE(test::stencilMatches(*counted, 0, 0, picture));
+}
+
+}  // namespace
+}  // namespace mpr
+
+namespace mpr {
+namespace {
+
+// A glass pane bends its light and the shadows in it (1994 "Refractive
+// shadows", Figure 2; change-of-medium model). Hand derivation (16x16,
+// camera at the origin looking down -z, fovy 90, wall at z = -4 filling the
+// view: a wall point (X, Y) lands at window (8 + 2X, 8 + 2Y)):
+// - The pane: 1.2 x 1.2 at z = -2 facing +z, ior 1.5. The light at
+//   C + 3.5 (-0.6, 0, 0.8) = (-2.1, 0, 0.8): incidence at the centre C
+//   sin 0.6, refracted sin 0.4. The virtual light is the light turned about
+//   C onto the refracted ray: C - 3.5 (0.4, 0, -sqrt(0.84)) =
+//   (-1.4, 0, 1.2078).
+// - Light volume (from the virtual light through the pane) on the wall:
+//   window x 7.80..11.69, y 6.05..9.95: pixels x 8..11, y 6..9.
+// - The pane's own shadow from the real light (draw_all_shadows):
+//   window x 8.94..13.06, y 5.94..10.06: pixels x 9..12, y 6..9.
+// - A blocker (0.16 cube at (-1.26, 0, -0.32), on the ray from the light to
+//   C, off screen) shadows the pane: MUST_INTERSECT. Carried through the
+//   face (P + (L' - L) dist(P) / dist(L)), its shadow from the virtual light
+//   is the hexagon x 8.69..10.97, y 7.30..8.70: pixels x 9..10, y 7..8 — one
+//   pixel left of its straight shadow from the real light (x 9.88..12.29:
+//   pixels 10..11, y 7..8). Every pixel centre is at least 0.18 pixel from
+//   every edge.
+TEST(RefLight, AGlassPaneBendsItsLightVolumeAndTheShadowInIt) {
+  const Scene scene = loadSceneText(R"(
+camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov: 90, near: 0.1, far: 20}
+lights: [{position: [-2.1, 0, 0.8]}]
+materials: {glass: {kind: refractive, ior: 1.5, transmittance: 0.8}}
+objects:
+  - {name: wall, primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
+  - {name: pane, primitive: quad, translate: [0, 0, -2], scale: 1.2, material: glass}
+  - {name: blocker, primitive: box, translate: [-1.26, 0, -0.32], scale: 0.16}
+render: {width: 16, height: 16, shadow_recursion_depth: 0}
+)", "glass-light.yaml");
+  GLContext gl(16, 16, indigoProfile());
+  GLCommandStream stream(gl, false);
+  std::optional<Framebuffer> afterVolume, afterRefShadows, afterDirectShadows;
+  std::vector<Rgba8> beforeLight, afterLight;
+  stream.onPassEnd([&](const std::string& label) {
+    if (label.find("face_light_stencil") != std::string::npos) afterVolume = gl.framebuffer();
+    if (label.find("make_all_shadows(CAN'T_INTERSECT") != std::string::npos) {
+      afterRefShadows = gl.framebuffer();
+      beforeLight = gl.framebuffer().colorData();
+    }
+    if (label.find("lit by the virtual light") != std::string::npos) afterLight = gl.framebuffer().colorData();
+    if (label.find("make_all_shadows(ALWAYS)") != std::string::npos) afterDirectShadows = gl.framebuffer();
+  });
+  const RenderResult r = renderScene(scene, stream);
+  EXPECT_EQ(r.plan.reflectedLights, 1);
+  ASSERT_TRUE(afterVolume && afterRefShadows && afterDirectShadows);
+  auto picture = [](auto value) {
+    std::string p = "\n";
+    for (int y = 15; y >= 0; --y) {
+      for (int x = 0; x < 16; ++x) p += std::to_string(value(x, y)) + " ";
+      p += "\n";
+    }
+    return p;
+  };
+  auto inVolume = [](int x, int y) { return x >= 8 && x <= 11 && y >= 6 && y <= 9; };
+  auto inBentShadow = [](int x, int y) { return x >= 9 && x <= 10 && y >= 7 && y <= 8; };
+  EXPECT_TRUE(test::stencilMatches(*afterVolume, 0, 0, picture([&](int x, int y) { return inVolume(x, y) ? 192 : 193; })));
+  EXPECT_TRUE(test::stencilMatches(*afterRefShadows, 0, 0, picture([&](int x, int y) {
+    return inVolume(x, y) && !inBentShadow(x, y) ? 192 : 193;
+  })));
+  // draw_all_shadows: the pane's shadow and the blocker's straight one.
+  EXPECT_TRUE(test::stencilMatches(*afterDirectShadows, 0, 0, picture([](int x, int y) {
+    const bool pane = x >= 9 && x <= 12 && y >= 6 && y <= 9;
+    const bool blocker = x >= 10 && x <= 11 && y >= 7 && y <= 8;
+    return 192 + pane + blocker;
+  })));
+  // The refracted light is added inside the volume, outside the bent shadow.
+  ASSERT_EQ(afterLight.size(), 256u);
+  for (std::size_t i = 0; i < 256; ++i) {
+    const int x = static_cast<int>(i % 16), y = static_cast<int>(i / 16);
+    if (inVolume(x, y) && !inBentShadow(x, y)) EXPECT_GT(afterLight[i][0], beforeLight[i][0]) << x << "," << y;
+    else EXPECT_EQ(afterLight[i], beforeLight[i]) << x << "," << y;
+  }
+}
+
+}  // namespace
+}  // namespace mpr
+
+namespace mpr {
+namespace {
+
+RefFace paneAtOrigin(MaterialKind kind, double ior) {
+  RefFace f;
+  f.kind = kind;
+  f.ior = ior;
+  f.polygon = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)};
+  f.normal = DVec3(0, 0, 1);
+  f.offset = 0.0;
+  f.centre = DVec3(0.0);
+  return f;
+}
+
+// ref_light: the mirror reflects; the refracting face turns the light about
+// its centre onto the refracted ray (Snell's law at the centre), keeping its
+// distance; no light passes a mirror from behind, a face from its own plane,
+// or a refracting face past the critical angle; index 1 is the light itself.
+TEST(RefLight, VirtualLightPositions) {
+  const RefFace mirror = paneAtOrigin(MaterialKind::Mirror, 1.0);
+  EXPECT_EQ(refLightPosition(mirror, DVec3(1, 2, 3)), DVec3(1, 2, -3));
+  EXPECT_FALSE(refLightPosition(mirror, DVec3(1, 2, -3)));
+  EXPECT_FALSE(refLightPosition(mirror, DVec3(1, 2, 0)));
+
+  const RefFace glass = paneAtOrigin(MaterialKind::Refractive, 1.5);
+  const DVec3 light(-0.6 * 2.0, 0.0, 0.8 * 2.0);  // incidence sin 0.6 at distance 2
+  const auto ref = refLightPosition(glass, light);
+  ASSERT_TRUE(ref);
+  EXPECT_NEAR(glm::length(*ref), 2.0, 1e-15);
+  // Seen from the virtual light, the centre lies along the refracted ray: sin 0.4.
+  const DVec3 t = glm::normalize(DVec3(0.0) - *ref);
+  EXPECT_NEAR(t.x, 0.4, 1e-15);
+  EXPECT_NEAR(t.z, -std::sqrt(0.84), 1e-15);
+  EXPECT_EQ(refLightPosition(paneAtOrigin(MaterialKind::Refractive, 1.0), light), light);
+  EXPECT_FALSE(refLightPosition(glass, DVec3(1, 0, 0)));
+  // From inside the glass (behind the face), the critical angle asin(1/1.5):
+  // just below it light passes, just above it none does.
+  const double critical = std::asin(1.0 / 1.5);
+  for (const double delta : {-1e-6, 1e-6}) {
+    const double a = critical + delta;
+    const auto r = refLightPosition(glass, DVec3(-std::sin(a), 0.0, -std::cos(a)));
+    EXPECT_EQ(r.has_value(), delta < 0.0) << delta;
+    if (r) EXPECT_TRUE(std::isfinite(r->x) && std::isfinite(r->z));
+  }
+}
+
+// A mirror and a light with nothing casting a shadow: the mirror still lights
+// the room, so the plan keeps the shadow passes (its light volume is a
+// stencil count); with shadows switched off it does not.
+TEST(RefLight, AMirrorLightsTheRoomWithoutAnyCaster) {
+  const std::string text = R"(
+camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov: 90, near: 0.1, far: 20}
+lights: [{position: [0, 0, -2]}]
+materials: {mirror: {kind: mirror, reflectance: 0.8}}
+objects:
+  - {name: wall, primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
+  - {name: mirror, primitive: quad, translate: [0, 0, -1], rotate: [180, 0, 1, 0], scale: 0.5, material: mirror}
+)";
+  const RenderPlan on = planRender(loadSceneText(text + "render: {width: 16, height: 16}\n", "m.yaml"));
+  EXPECT_EQ(on.shadowCasters, 0);
+  EXPECT_TRUE(on.shadows);
+  EXPECT_EQ(on.reflectedLights, 1);
+  const RenderPlan off = planRender(loadSceneText(text + "render: {width: 16, height: 16, shadows: false}\n", "m.yaml"));
+  EXPECT_FALSE(off.shadows);
+  EXPECT_EQ(off.reflectedLights, 0);
 }
 
 }  // namespace
