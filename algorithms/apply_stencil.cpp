@@ -50,6 +50,7 @@ void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLeve
 }
 
 void apply_to_screen(GLCommandStream& gl, const GLStencilSetting& g) {
+  gl.windowMap(std::nullopt);  // the whole screen, not a refracted view's image
   setStencil(gl, g);
   gl.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
   gl.call(GLCall::DepthMask, {"GL_FALSE"});

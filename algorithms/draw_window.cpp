@@ -302,19 +302,26 @@ class WindowRenderer {
   // The view of `cam`: projection, modelview = lookAt * world, winding, clip plane.
   void setupView(const ViewCamera& cam) {
     const Camera& c = s_.camera;
+    const RefractionMap placement = s_.render.refractionMap;
+    // The end-of-pipeline placement: the emulated 3x3 stage after the
+    // perspective divide (depth kept exactly); off in every other view.
+    std::optional<glm::mat3> windowMap;
+    if (cam.mapped && placement == RefractionMap::EndOfPipeline) windowMap = glm::mat3(cam.imageMap);
+    gl_.windowMap(windowMap);
     gl_.call(GLCall::MatrixMode, {"GL_PROJECTION"});
     gl_.call(GLCall::LoadIdentity, {});
-    if (cam.mapped) {
+    if (cam.mapped && placement != RefractionMap::EndOfPipeline) {
       // M3 as the user 4x4 of (A5), applied after the projection (it maps
-      // normalised device coordinates, x and y over w), but with Z kept:
-      // A5's zeroed Z makes the projection singular, and GL carries the user
-      // clip plane that cuts the refracted view at the face into clip space
-      // through the inverse projection (as Mesa does), so nothing would
-      // survive. Kept, Z is divided by the map's w, a positive factor
-      // constant along each view ray, so the depth order and the
+      // normalised device coordinates, x and y over w). The paper zeroes Z
+      // (projection_zeroed_z): every point then has the same depth, which
+      // "precludes the use of the Z-buffer", and the projection becomes
+      // singular, so the user clip plane at the face, which GL carries into
+      // clip space through the inverse projection (as Mesa does), cannot be
+      // used. MPR's default keeps Z: it is divided by the map's w, a positive
+      // factor constant along each view ray, so the depth order and the
       // depth-equal light passes still hold.
       Mat4 m = quadToQuadMatrix4(cam.imageMap);
-      m[2][2] = 1.0f;
+      if (placement == RefractionMap::ProjectionKeptZ) m[2][2] = 1.0f;
       gl_.call(GLCall::MultMatrixf, {m[0][0], m[0][1], m[0][2], m[0][3], m[1][0], m[1][1], m[1][2], m[1][3],
                                      m[2][0], m[2][1], m[2][2], m[2][3], m[3][0], m[3][1], m[3][2], m[3][3]});
     }
@@ -333,7 +340,7 @@ class WindowRenderer {
                                      w[2][0], w[2][1], w[2][2], w[2][3], w[3][0], w[3][1], w[3][2], w[3][3]});
     }
     gl_.call(GLCall::FrontFace, {cam.mirrored ? "GL_CW" : "GL_CCW"});
-    if (cam.clip) {
+    if (cam.clip && !(cam.mapped && placement == RefractionMap::ProjectionZeroedZ)) {
       // The plane is given in the coordinates geometry is drawn in (the real
       // scene's), so GL transforms it into the virtual view with the modelview.
       gl_.call(GLCall::ClipPlane, {"GL_CLIP_PLANE0", cam.clipPlane.x, cam.clipPlane.y, cam.clipPlane.z,
@@ -447,6 +454,7 @@ class WindowRenderer {
   // the virtual scene can be drawn there with the depth test.
   void clearMaskToFar(Vec3 colour) {
     stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
+    gl_.windowMap(std::nullopt);
     gl_.call(GLCall::Disable, {"GL_LIGHTING"});
     gl_.call(GLCall::Disable, {"GL_BLEND"});
     gl_.call(GLCall::Disable, {"GL_CULL_FACE"});

@@ -67,6 +67,21 @@ void GLCommandStream::call(GLCall c, std::initializer_list<GLArg> args) {
   }
 }
 
+void GLCommandStream::windowMap(const std::optional<glm::mat3>& map) {
+  if (map == gl_.windowMap()) return;
+  gl_.setWindowMap(map);
+  if (map) usedWindowMap_ = true;
+  if (!record_) return;
+  trace_ += "# MPR end-of-pipeline map (not a GL call; a replay lacks it):";
+  if (!map) trace_ += " off";
+  for (int k = 0; map && k < 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      trace_ += ' ';
+      trace_ += numberText(GLArg((*map)[k][i]));
+    }
+  trace_ += '\n';
+}
+
 void GLCommandStream::closePass() {
   if (currentKind_.empty()) return;
   PassStatistics& s = stats_[currentKind_];

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,6 +48,12 @@ class GLCommandStream {
   // tests and the stepper look at the buffers there.
   void onPassEnd(std::function<void(const std::string& label)> f) { passEnd_ = std::move(f); }
 
+  // The end-of-pipeline map (GLContext::setWindowMap; the 1994 paper's wished
+  // hardware stage, not a GL call). Recorded in the trace as a comment only,
+  // so a trace of a render that used it does not replay to the same bytes.
+  void windowMap(const std::optional<glm::mat3>& map);
+  bool usedWindowMap() const { return usedWindowMap_; }
+
   const std::string& trace() const { return trace_; }
   std::uint64_t glErrors() const { return glErrors_; }
   std::uint64_t calls() const { return calls_; }
@@ -59,6 +66,7 @@ class GLCommandStream {
   bool record_;
   std::string trace_;
   std::uint64_t calls_ = 0, glErrors_ = 0;
+  bool usedWindowMap_ = false;
   std::map<std::string, PassStatistics> stats_;
   std::string currentKind_, currentLabel_;
   std::function<void(const std::string&)> passEnd_;

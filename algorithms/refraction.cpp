@@ -43,11 +43,14 @@ std::optional<RefractedView> refractedView(const ViewCamera& outer, const Camera
   const DVec3 n = eyeInFront ? face.normal : -face.normal;
   const double eta = eyeInFront ? 1.0 / ior : ior;
 
-  // The face centre decides against the critical angle.
+  // The face centre decides against the critical angle. Only eta > 1 has
+  // one: at eta = 1 (ior 1) the ray goes straight on, yet within about 1e-8
+  // rad of grazing cos^2 vanishes beside 1, sin rounds to 1 and 1 * 1 >= 1
+  // would make a plain transparent face a mirror (refraction_hard_cases_test).
   const DVec3 toCentre = glm::normalize(face.centre - eye);
   const double cosC = std::min(1.0, std::fabs(glm::dot(toCentre, n)));
   const double sinC = std::sqrt(std::max(0.0, 1.0 - cosC * cosC));
-  if (eta * sinC >= 1.0) {
+  if (eta > 1.0 && eta * sinC >= 1.0) {
     r.totalReflection = true;
     return r;
   }

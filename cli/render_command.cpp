@@ -89,6 +89,9 @@ int runRender(const RenderOptions& o) {
     if (tty) std::cerr << "\rrender: view " << p.views << " of at most " << p.predictedViews << "   " << std::flush;
   }, !o.noCull);
   for (const std::string& w : result.counts.warnings) std::cerr << scene.file << ": warning: " << w << "\n";
+  if (!o.traceFile.empty() && stream.usedWindowMap())
+    std::cerr << scene.file << ": warning: refraction_map end_of_pipeline is an emulated stage, not a GL call: the "
+              << "trace marks it in comments, and a replay (mpr gl, Mesa) draws the refracted views unmapped\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
   try {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "framebuffer/accumulation.hpp"
@@ -149,6 +150,18 @@ class GLContext {
   bool flatShading() const { return flatShading_; }
   std::array<double, 2> depthRangeValues() const { return {depthNear_, depthFar_}; }
 
+  // --- the end-of-pipeline map (an MPR extension, not a GL call) ------------
+  // The 1994 paper's wish ("Refractions"): "in hardware that supports
+  // user-defined transforms, this transform can be inserted directly at the
+  // end of the rendering pipeline". A 3x3 projective map of normalised device
+  // x, y in the paper's row-vector form, [u v q] = [x y 1] M (glm: column k
+  // gives output k), applied after the perspective divide and before the
+  // viewport; depth is kept. See windowMap semantics in gl_context_draw.cpp.
+  // Not part of the GL state (no glGet, not saved by glPush/Pop): a stage of
+  // the emulated hardware that a renderer switches on and off.
+  void setWindowMap(const std::optional<glm::mat3>& map) { windowMap_ = map; }
+  const std::optional<glm::mat3>& windowMap() const { return windowMap_; }
+
   // Observes every fragment that reaches the per-fragment tests; costs nothing
   // when unset.
   std::function<void(const FragmentEvent&)> fragmentObserver;
@@ -217,6 +230,7 @@ class GLContext {
   Mat4 mvp_;
   glm::mat3 normalMatrix_;
   std::vector<ClipPlane> clipPlanesClip_;
+  std::optional<glm::mat3> windowMap_;
 };
 
 }  // namespace mpr

@@ -326,6 +326,19 @@ void GLContext::end() {
   const Mat4 projInverse = glm::inverse(projection_.top());
   for (int i = 0; i < 6; ++i)
     if (clipPlaneEnabled_[i]) clipPlanesClip_.push_back(clipPlanesEye_[i] * projInverse);
+  if (windowMap_) {
+    // The end-of-pipeline map: what lands in the viewport is |u| <= q and
+    // |v| <= q (so q >= 0), which is linear in clip coordinates (u w is
+    // M[0] . (x, y, w)): the view volume's four sides are replaced by these,
+    // so the clipper keeps exactly what the map puts on the screen.
+    const glm::mat3& m = *windowMap_;
+    const Vec4 u(m[0][0], m[0][1], 0.0f, m[0][2]), v(m[1][0], m[1][1], 0.0f, m[1][2]),
+        q(m[2][0], m[2][1], 0.0f, m[2][2]);
+    clipPlanesClip_[2] = q + u;
+    clipPlanesClip_[3] = q - u;
+    clipPlanesClip_[4] = q + v;
+    clipPlanesClip_[5] = q - v;
+  }
 
   const std::vector<AssembledTriangle> tris = assembleTriangles(primitive_, static_cast<std::uint32_t>(vertices_.size()));
   if (tris.empty()) return;
@@ -385,12 +398,28 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
                                          const LlvmpipeDepth& depth) {
   const ClipVertex* v[3] = {&a, &b, &c};
   std::array<SnappedVertex, 3> snapped;
-  double invW[3], xWin[3], yWin[3];
+  double invW[3], xWin[3], yWin[3], mapZ[3] = {0.0, 0.0, 0.0}, mapInvQ[3] = {1.0, 1.0, 1.0};
   for (int i = 0; i < 3; ++i) {
     const float iw = 1.0f / v[i]->clip.w;
-    const float xw = v[i]->clip.x * iw * vpScaleX_ + vpTransX_;
-    const float yw = v[i]->clip.y * iw * vpScaleY_ + vpTransY_;
-    invW[i] = static_cast<double>(iw);
+    float xn = v[i]->clip.x * iw, yn = v[i]->clip.y * iw;
+    if (windowMap_) {
+      // [u v q] = [x y 1] M on normalised device coordinates; the vertex
+      // goes to (u/q, v/q) and keeps its depth. Attributes and depth are then
+      // interpolated as in the unmapped image: a projective map divides the
+      // screen-space weights by q (so 1/w becomes 1/(w q), and depth, linear
+      // on the unmapped screen, is weighted by 1/q).
+      const glm::mat3& m = *windowMap_;
+      const float q = m[2][0] * xn + m[2][1] * yn + m[2][2];
+      if (!(q > 0.0f)) return;  // clipped to q >= |u|: only a point can reach q = 0
+      const float u = m[0][0] * xn + m[0][1] * yn + m[0][2], w = m[1][0] * xn + m[1][1] * yn + m[1][2];
+      mapZ[i] = static_cast<double>(v[i]->clip.z * iw * depth.window.scaleZ + depth.window.transZ);
+      mapInvQ[i] = 1.0 / static_cast<double>(q);
+      xn = u / q;
+      yn = w / q;
+    }
+    const float xw = xn * vpScaleX_ + vpTransX_;
+    const float yw = yn * vpScaleY_ + vpTransY_;
+    invW[i] = static_cast<double>(iw) * mapInvQ[i];
     xWin[i] = xw;
     yWin[i] = yw;
     snapped[i] = snapVertex(xw, yw);
@@ -442,8 +471,13 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
       // llvmpipe's plane, evaluated as its fragment shader does, then
       // quantised as it converts to a unorm buffer: the float z times the
       // float maximum, a single-precision product, rounded to nearest even.
-      const float z =
-          depthPlanes.triangles.empty() ? 0.0f : std::clamp(depthPlanes.at(x, fbHeight - 1 - y), 0.0f, 1.0f);
+      float z = 0.0f;
+      if (windowMap_) {
+        const double q0 = b0 * mapInvQ[0], q1 = b1 * mapInvQ[1], q2 = b2 * mapInvQ[2];
+        z = std::clamp(static_cast<float>((q0 * mapZ[0] + q1 * mapZ[1] + q2 * mapZ[2]) / (q0 + q1 + q2)), 0.0f, 1.0f);
+      } else if (!depthPlanes.triangles.empty()) {
+        z = std::clamp(depthPlanes.at(x, fbHeight - 1 - y), 0.0f, 1.0f);
+      }
       f.depth = static_cast<std::uint32_t>(std::nearbyint(z * depthMaxF));
     }
     if (needColor) {

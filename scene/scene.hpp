@@ -62,6 +62,13 @@ struct SceneObject {
   int line = 0;       // where the object is defined, for messages
 };
 
+// Where a refracted view's image map M3 (1994 eqs. 1-3) is applied. The
+// paper's SGI way is the 4x4 of (A5) on the projection with Z zeroed, which
+// "precludes the use of the Z-buffer"; the placement it wished for is a 3x3
+// at the end of the pipeline, which keeps depth (an emulated stage, not GL);
+// MPR's default is the 4x4 with Z kept, GL-expressible and depth-ordered.
+enum class RefractionMap { ProjectionKeptZ, ProjectionZeroedZ, EndOfPipeline };
+
 struct RenderSettings {
   int width = 640, height = 480;
   int recursionDepth = 2;        // mirror/refraction levels
@@ -70,6 +77,7 @@ struct RenderSettings {
   int antialiasSamples = 1;
   bool shadows = true, reflections = true, refractions = true, translucency = true, frosted = true;
   std::string profile = "indigo";
+  RefractionMap refractionMap = RefractionMap::ProjectionKeptZ;
 };
 
 struct Scene {

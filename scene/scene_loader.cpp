@@ -75,6 +75,8 @@ const std::vector<KeySpec> kRenderKeys = {
     {"shadows", "bool", "default true"}, {"reflections", "bool", "default true"},
     {"refractions", "bool", "default true"}, {"translucency", "bool", "default true"},
     {"frosted", "bool", "default true"}, {"profile", "indigo | mesa", "hardware profile, default indigo"},
+    {"refraction_map", "projection | projection_zeroed_z | end_of_pipeline",
+     "where a refracted view's image map M3 is applied, default projection (the 4x4 with Z kept)"},
 };
 
 struct Override {
@@ -214,6 +216,15 @@ class Loader {
     if (n["profile"]) {
       r.profile = string(n["profile"], "render.profile");
       if (!findProfile(r.profile)) fail(n["profile"], "unknown profile '" + r.profile + "' (known: indigo, mesa)");
+    }
+    if (n["refraction_map"]) {
+      const std::string m = string(n["refraction_map"], "render.refraction_map");
+      if (m == "projection") r.refractionMap = RefractionMap::ProjectionKeptZ;
+      else if (m == "projection_zeroed_z") r.refractionMap = RefractionMap::ProjectionZeroedZ;
+      else if (m == "end_of_pipeline") r.refractionMap = RefractionMap::EndOfPipeline;
+      else
+        fail(n["refraction_map"], "unknown refraction_map '" + m +
+                                      "' (known: projection, projection_zeroed_z, end_of_pipeline)");
     }
   }
 

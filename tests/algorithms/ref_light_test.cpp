@@ -233,7 +233,9 @@ TEST(RefLight, VirtualLightPositions) {
     const double a = critical + delta;
     const auto r = refLightPosition(glass, DVec3(-std::sin(a), 0.0, -std::cos(a)));
     EXPECT_EQ(r.has_value(), delta < 0.0) << delta;
-    if (r) EXPECT_TRUE(std::isfinite(r->x) && std::isfinite(r->z));
+    if (r) {
+      EXPECT_TRUE(std::isfinite(r->x) && std::isfinite(r->z));
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 // face is on the screen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "algorithms/refraction.hpp"
@@ -121,6 +122,63 @@ render: {width: 16, height: 16}
       if (inSlab) EXPECT_EQ(c, (Rgba8{153, 102, 51, 255})) << x << "," << y;
       else EXPECT_EQ(c, direct[static_cast<std::size_t>(y * 16 + x)]) << x << "," << y;
     }
+}
+
+}  // namespace
+}  // namespace mpr
+
+namespace mpr {
+namespace {
+
+// Where M3 is applied (render.refraction_map). The depth written inside the
+// refracted view, at the end of its ambient pass: the paper's 4x4 with Z
+// zeroed sends every point to NDC z = 0, window depth 0.5, stored as
+// rint(0.5 * (2^24 - 1)) = 8388608 on every pixel ("precludes the use of the
+// Z-buffer"); Z kept (on the projection or by the end-of-pipeline stage), the
+// wall and the box behind the pane keep their many depths. Every mapping
+// draws the same pixels of the mask.
+TEST(Refraction, WhereTheMapIsAppliedDecidesTheDepth) {
+  struct Seen {
+    std::vector<std::uint32_t> depths;  // drawn pixels of the mask
+    std::string trace;
+  };
+  auto render = [](const char* placement) {
+    const Scene s = loadSceneText(std::string(R"(
+camera: {position: [0.3, 0.2, 0], look_at: [0, 0, -1], fov: 70, near: 0.1, far: 20}
+materials: {glass: {kind: refractive, ior: 1.5}}
+objects:
+  - {primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
+  - {primitive: box, translate: [-0.4, -0.2, -3], scale: 0.6}
+  - {primitive: quad, translate: [0, 0, -1.5], rotate: [20, 0, 1, 0], material: glass}
+render: {width: 32, height: 24, refraction_map: )") + placement + "}\n", "map.yaml");
+    GLContext gl(32, 24, indigoProfile());
+    GLCommandStream stream(gl, true);
+    Seen seen;
+    stream.onPassEnd([&](const std::string& label) {
+      if (label.find("draw_window level 1 > ambient") == std::string::npos) return;
+      for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 32; ++x)
+          if (gl.stencilAt(x, y) == 0 && gl.depthAt(x, y) != 16777215u) seen.depths.push_back(gl.depthAt(x, y));
+    });
+    renderScene(s, stream);
+    EXPECT_EQ(stream.glErrors(), 0u);
+    seen.trace = stream.trace();
+    return seen;
+  };
+  const Seen zeroed = render("projection_zeroed_z"), kept = render("projection"), stage = render("end_of_pipeline");
+  ASSERT_GT(zeroed.depths.size(), 20u);
+  for (std::uint32_t d : zeroed.depths) EXPECT_EQ(d, 8388608u);
+  auto distinct = [](std::vector<std::uint32_t> v) {
+    std::sort(v.begin(), v.end());
+    return std::unique(v.begin(), v.end()) - v.begin();
+  };
+  EXPECT_GT(distinct(kept.depths), 20);
+  EXPECT_GT(distinct(stage.depths), 20);
+  EXPECT_EQ(kept.depths.size(), zeroed.depths.size());
+  EXPECT_EQ(stage.depths.size(), kept.depths.size());
+  // The stage is not a GL call: the trace says so in a comment.
+  EXPECT_NE(stage.trace.find("# MPR end-of-pipeline map"), std::string::npos);
+  EXPECT_EQ(kept.trace.find("# MPR end-of-pipeline map"), std::string::npos);
 }
 
 }  // namespace

@@ -81,6 +81,8 @@ TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
   EXPECT_EQ(errorOf("camra: {}\n"), "s.yaml:1:1: unknown key 'camra' in the scene; did you mean 'camera'?");
   EXPECT_EQ(errorOf("render:\n  width: wide\n"), "s.yaml:2:10: render.width must be a number, not 'wide'");
   EXPECT_EQ(errorOf("render:\n  width: 1.5\n"), "s.yaml:2:10: render.width must be an integer, not 1.5");
+  EXPECT_EQ(errorOf("render:\n  refraction_map: sideways\n"),
+            "s.yaml:2:19: unknown refraction_map 'sideways' (known: projection, projection_zeroed_z, end_of_pipeline)");
   EXPECT_EQ(errorOf("ambient: [0, .nan, 0]\n"), "s.yaml:1:14: ambient[1] must be finite, not '.nan'");
   EXPECT_EQ(errorOf("ambient: [0, 1]\n"), "s.yaml:1:10: ambient must be a list of 3 numbers, like [0, 1, 0]");
   EXPECT_EQ(errorOf("camera: {position: [0, 0, 0], look_at: [0, 0, 0]}\n"),
