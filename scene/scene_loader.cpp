@@ -64,7 +64,9 @@ const std::vector<KeySpec> kObjectKeys = {
     {"subdivisions", "integer >= 1", "sphere slices (stacks are half), cylinder slices, plane divisions"},
     {"translate", "vec3", "applied last"}, {"rotate", "[degrees, x, y, z]", "applied after scale"},
     {"scale", "number or vec3", "applied first"}, {"material", "name", "a key of `materials`"},
-    {"casts_shadows", "bool", "gets a shadow volume; default true, false for quad and plane"},
+    {"casts_shadows", "bool",
+     "gets a shadow volume; default true, false for quad and plane; mirrors never, refracting faces always "
+     "(their light goes on through their light volume)"},
 };
 const std::vector<KeySpec> kRenderKeys = {
     {"width", "integer", "image width, default 640"}, {"height", "integer", "image height, default 480"},
