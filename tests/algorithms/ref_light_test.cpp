@@ -48,12 +48,9 @@ render: {width: 16, height: 16, shadow_recursion_depth: 0}
   const RenderResult r = renderScene(scene, stream);
   EXPECT_EQ(r.plan.reflectedLights, 1);
   ASSERT_TRUE(afterVolume);
-  std::string picture = "\n";
-  for (int y = 15; y >= 0; --y) {
-    for (int x = 0; x < 16; ++x) picture += (x >= 6 && x <= 9 && y >= 6 && y <= 9) ? "192 " : "193 ";
-    picture += "\n";
-  }
-  EXPECT_TRUE(test::stencilMatches(*afterVolume, 0, 0, picture));
+  EXPECT_TRUE(test::stencilMatches(*afterVolume, 0, 0, test::stencilPictureOf(16, 16, [](int x, int y) {
+    return x >= 6 && x <= 9 && y >= 6 && y <= 9 ? 192 : 193;
+  })));
   // The virtual light adds light inside the volume only.
   for (std::size_t i = 0; i < 256; ++i) {
     const int x = static_cast<int>(i % 16), y = static_cast<int>(i / 16);
@@ -94,16 +91,11 @@ render: {width: 16, height: 16, shadow_recursion_depth: 0}
   });
   renderScene(scene, stream);
   ASSERT_TRUE(counted);
-  std::string picture = "\n";
-  for (int y = 15; y >= 0; --y) {
-    for (int x = 0; x < 16; ++x) {
-      const bool lit = x >= 5 && x <= 8 && y >= 6 && y <= 9;
-      const bool shadowed = x == 7 && y >= 7 && y <= 8;
-      picture += lit && !shadowed ? "192 " : "193 ";
-    }
-    picture += "\n";
-  }
-  EXPECT_TRUE(test::stencilMatches(*counted, 0, 0, picture));
+  EXPECT_TRUE(test::stencilMatches(*counted, 0, 0, test::stencilPictureOf(16, 16, [](int x, int y) {
+    const bool lit = x >= 5 && x <= 8 && y >= 6 && y <= 9;
+    const bool shadowed = x == 7 && y >= 7 && y <= 8;
+    return lit && !shadowed ? 192 : 193;
+  })));
 }
 
 }  // namespace
@@ -159,14 +151,7 @@ render: {width: 16, height: 16, shadow_recursion_depth: 0}
   const RenderResult r = renderScene(scene, stream);
   EXPECT_EQ(r.plan.reflectedLights, 1);
   ASSERT_TRUE(afterVolume && afterRefShadows && afterDirectShadows);
-  auto picture = [](auto value) {
-    std::string p = "\n";
-    for (int y = 15; y >= 0; --y) {
-      for (int x = 0; x < 16; ++x) p += std::to_string(value(x, y)) + " ";
-      p += "\n";
-    }
-    return p;
-  };
+  auto picture = [](auto value) { return test::stencilPictureOf(16, 16, value); };
   auto inVolume = [](int x, int y) { return x >= 8 && x <= 11 && y >= 6 && y <= 9; };
   auto inBentShadow = [](int x, int y) { return x >= 9 && x <= 10 && y >= 7 && y <= 8; };
   EXPECT_TRUE(test::stencilMatches(*afterVolume, 0, 0, picture([&](int x, int y) { return inVolume(x, y) ? 192 : 193; })));
