@@ -9,6 +9,10 @@
 
 namespace mpr {
 
+// Refracting materials: the recursion looks through them with a refracted
+// camera, and their light goes on through a refracted light volume.
+inline bool refracts(MaterialKind k) { return k == MaterialKind::Refractive || k == MaterialKind::Translucent; }
+
 struct RefFace {
   int object = 0;              // index into Scene::objects
   std::vector<Vec3> polygon;   // world space, counter-clockwise seen from the front
@@ -17,7 +21,7 @@ struct RefFace {
   DVec3 centre{0.0};
   MaterialKind kind = MaterialKind::Mirror;
   double ior = 1.0;            // refractive faces
-  bool refracts() const { return kind == MaterialKind::Refractive || kind == MaterialKind::Translucent; }
+  bool refracts() const { return mpr::refracts(kind); }
   float fogDistance = 1.0f;    // translucent faces
   Vec3 color{0.0f};            // the material's diffuse colour (translucent fog colour)
 

@@ -8,8 +8,7 @@ namespace mpr {
 ShadowRole shadowRole(const SceneObject& o, const Scene& scene) {
   const SceneMaterial& m = scene.materials[static_cast<std::size_t>(o.material)];
   if (!isRefMaterial(m, scene.render)) return o.castsShadows ? ShadowRole::Caster : ShadowRole::None;
-  const bool refracts = m.kind == MaterialKind::Refractive || m.kind == MaterialKind::Translucent;
-  return refracts ? ShadowRole::RefractingFace : ShadowRole::None;
+  return refracts(m.kind) ? ShadowRole::RefractingFace : ShadowRole::None;
 }
 
 ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : scene_(scene) {
