@@ -366,7 +366,10 @@ void GLContext::end() {
       for (ClipVertex& cv : tri)
         for (int i = 0; i < 8; ++i) cv.attr[i] = processed[t.provoking].attr[i];
     LlvmpipeDepth depth{window, &userPlanes, {}};
-    if (quadsOtherDiagonal) {
+    if (windowMap_) {
+      // The end-of-pipeline stage interpolates depth itself (only the
+      // window transform is used): no llvmpipe planes to set up.
+    } else if (quadsOtherDiagonal) {
       const std::uint32_t q = t.v[0];  // MPR's quad triangles both start at the quad's first vertex
       depth.add(processed[q].clip, processed[q + 1].clip, processed[q + 3].clip);
       depth.add(processed[q + 1].clip, processed[q + 2].clip, processed[q + 3].clip);
@@ -437,7 +440,7 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   // Where llvmpipe's clipping dropped what MPR's kept, MPR's own triangle
   // stands in (it is then at most a few pixels of an edge).
   LlvmpipeDepth fallback{depth.window, depth.userPlanes, {}};
-  if (depth.triangles.empty()) fallback.add(a.clip, b.clip, c.clip);
+  if (depth.triangles.empty() && !windowMap_) fallback.add(a.clip, b.clip, c.clip);
   const LlvmpipeDepth& depthPlanes = depth.triangles.empty() ? fallback : depth;
   // Coverage is decided on the snapped vertices; colours are interpolated on
   // the unsnapped window positions, as llvmpipe sets up its planes (depth
