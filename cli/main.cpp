@@ -2,9 +2,11 @@
 // calls the libraries.
 #include <CLI/CLI.hpp>
 
+#include "cli/accuracy_command.hpp"
 #include "cli/conform_command.hpp"
 #include "cli/gl_command.hpp"
 #include "cli/info_command.hpp"
+#include "cli/reference_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/step_command.hpp"
 
@@ -19,6 +21,8 @@ int main(int argc, char** argv) {
   mpr::cli::addRenderCommand(app, exitCode);
   mpr::cli::addStepCommand(app, exitCode);
   mpr::cli::addInfoCommand(app, exitCode);
+  mpr::cli::addReferenceCommand(app, exitCode);
+  mpr::cli::addAccuracyCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

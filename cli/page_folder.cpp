@@ -21,8 +21,8 @@ std::string quoted(const std::string& path, std::string_view why) {
   return o;
 }
 
-bool holdsPage(const fs::path& dir, std::string_view generator) {
-  std::ifstream in(dir / "index.html", std::ios::binary);
+bool holdsPage(const fs::path& dir, std::string_view generator, std::string_view page) {
+  std::ifstream in(dir / fs::path(page), std::ios::binary);
   std::string head(4096, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
@@ -48,7 +48,7 @@ fs::path sibling(const fs::path& dir, const std::string& what) {
 
 }  // namespace
 
-std::string pageFolderProblem(const std::string& dir, std::string_view generator) {
+std::string pageFolderProblem(const std::string& dir, std::string_view generator, std::string_view page) {
   std::error_code ec;
   const fs::path p = fs::path(dir).lexically_normal();
   if (p.empty() || p.filename().empty() || p.filename() == "." || p.filename() == "..")
@@ -56,7 +56,7 @@ std::string pageFolderProblem(const std::string& dir, std::string_view generator
   const fs::file_status st = fs::status(p, ec);
   if (fs::exists(st)) {
     if (!fs::is_directory(st)) return quoted(dir, "exists and is not a folder");
-    if (!fs::is_empty(p, ec) && !holdsPage(p, generator))
+    if (!fs::is_empty(p, ec) && !holdsPage(p, generator, page))
       return quoted(dir, "is a folder with other files in it; give a new or empty folder (an earlier page there is replaced)");
   }
   // The nearest existing ancestor must be a folder (the rest is created).

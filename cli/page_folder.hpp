@@ -3,7 +3,7 @@
 // folder beside it and renamed into place at the end, so a failed or
 // interrupted run leaves no half page: either the old folder or the new one.
 // An existing folder is only replaced when it is empty or holds an earlier
-// page (its index.html names `generator`), never a user's other files.
+// page (its page names `generator`), never a user's other files.
 #include <string>
 #include <string_view>
 #include <utility>
@@ -13,8 +13,11 @@ namespace mpr::cli {
 
 using PageFile = std::pair<std::string, std::string>;  // name in the folder, bytes
 
-// Why `dir` cannot take the page, or empty when it can.
-std::string pageFolderProblem(const std::string& dir, std::string_view generator);
+// Why `dir` cannot take the page, or empty when it can. An earlier page is
+// recognised by the generator tag in its `page` file (index.html for the
+// stepper, report.html for mpr accuracy).
+std::string pageFolderProblem(const std::string& dir, std::string_view generator,
+                              std::string_view page = "index.html");
 
 // Writes every file, then puts the folder in place. Throws std::runtime_error.
 void writePageFolder(const std::string& dir, const std::vector<PageFile>& files);

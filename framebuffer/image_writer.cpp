@@ -45,27 +45,42 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
   renameIntoPlace(tmp, path);
 }
 
-void writeColorImage(const Framebuffer& fb, const std::string& path) {
-  const int w = fb.width(), h = fb.height();
+namespace {
+
+template <typename T>
+void writeRgb(const std::string& path, int w, int h, const T* rgb, OIIO::TypeDesc type) {
   const std::string tmp = temporaryNameFor(path);
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-  // Colour only: a viewer should not show the destination alpha that the
-  // multi-pass algorithms use as scratch. GL rows are bottom-up; images top-down.
-  OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w) * h * 3);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const Rgba8& c = fb.color(x, y);
-      std::uint8_t* dst = &rgb[(static_cast<std::size_t>(h - 1 - y) * w + x) * 3];
-      for (int i = 0; i < 3; ++i) dst[i] = c[i];
-    }
-  if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) || !out->close()) {
+  OIIO::ImageSpec spec(w, h, 3, type);
+  // GL rows are bottom-up; images top-down: start at the top row, step down.
+  const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(w) * 3 * static_cast<std::ptrdiff_t>(sizeof(T));
+  const T* top = rgb + static_cast<std::size_t>(h - 1) * w * 3;
+  if (!out->open(tmp, spec) || !out->write_image(type, top, OIIO::AutoStride, -row) || !out->close()) {
     const std::string why = out->geterror();
     std::remove(tmp.c_str());
     throw std::runtime_error("cannot write " + path + ": " + why);
   }
   renameIntoPlace(tmp, path);
+}
+
+}  // namespace
+
+void writeRgbImage(const std::string& path, int width, int height, const std::uint8_t* rgb) {
+  writeRgb(path, width, height, rgb, OIIO::TypeDesc::UINT8);
+}
+
+void writeRgbImage(const std::string& path, int width, int height, const float* rgb) {
+  writeRgb(path, width, height, rgb, OIIO::TypeDesc::FLOAT);
+}
+
+void writeColorImage(const Framebuffer& fb, const std::string& path) {
+  // Colour only: a viewer should not show the destination alpha that the
+  // multi-pass algorithms use as scratch.
+  std::vector<std::uint8_t> rgb;
+  rgb.reserve(fb.colorData().size() * 3);
+  for (const Rgba8& c : fb.colorData()) rgb.insert(rgb.end(), {c[0], c[1], c[2]});
+  writeRgbImage(path, fb.width(), fb.height(), rgb.data());
 }
 
 }  // namespace mpr

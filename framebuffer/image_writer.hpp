@@ -12,6 +12,12 @@ namespace mpr {
 // Throws std::runtime_error with OpenImageIO's message on failure.
 void writeColorImage(const Framebuffer& fb, const std::string& path);
 
+// RGB pixels, three values a pixel, rows bottom-up (window y = 0 first) as
+// the framebuffer stores them; written top row first, atomically. 8-bit
+// values as they are; floats as floats where the format holds them (EXR).
+void writeRgbImage(const std::string& path, int width, int height, const std::uint8_t* rgb);
+void writeRgbImage(const std::string& path, int width, int height, const float* rgb);
+
 // Writes `bytes` to `path` atomically (temporary file, then rename).
 void writeFileAtomically(const std::string& path, const std::string& bytes);
 

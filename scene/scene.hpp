@@ -36,6 +36,11 @@ struct SceneMaterial {
   Vec3 specular{0.0f, 0.0f, 0.0f};
   Vec3 emission{0.0f, 0.0f, 0.0f};
   float shininess = 0.0f;       // Phong exponent (from `roughness` by the 1997 paper's eq. 6)
+  // Ward's isotropic Gaussian as given (1997 eqs. 3, 5): alpha (0 = none
+  // given) and rho_s, the specular before eq. (6) scaled it. The pipeline
+  // uses the fitted Phong terms above; the reference's physical model these.
+  float roughness = 0.0f;
+  Vec3 wardSpecular{0.0f, 0.0f, 0.0f};
   float reflectance = 1.0f;     // mirror
   float ior = 1.5f;             // refractive, translucent, frosted
   float transmittance = 0.9f;   // refractive, translucent, frosted

@@ -289,6 +289,8 @@ class Loader {
         fail(n["roughness"], where + " roughness must be at least 0.125: eq. (6) gives a Phong exponent of 1.999/alpha^2, "
                                  "and GL's largest is 128");
       m.shininess = static_cast<float>(exponent);
+      m.roughness = static_cast<float>(alpha);
+      m.wardSpecular = m.specular;
       m.specular *= static_cast<float>(0.0398 * exponent);
     }
     if (n["reflectance"]) m.reflectance = static_cast<float>(number(n["reflectance"], where + " reflectance", 0.0, 1.0));

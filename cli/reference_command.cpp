@@ -1,0 +1,107 @@
+#include "cli/reference_command.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "reference/reference_image.hpp"
+#include "reference/reference_renderer.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace mpr::cli {
+namespace {
+
+struct ReferenceCommandOptions {
+  std::string scene;
+  std::string output = "out/reference.png";
+  int width = 0, height = 0;
+  int spp = 16, bounces = -1, threads = 0;
+  std::string model = "pipeline";
+  std::vector<std::string> sets;
+};
+
+std::string fixed(double v, int digits) {
+  std::ostringstream o;
+  o.setf(std::ios::fixed);
+  o.precision(digits);
+  o << v;
+  return o.str();
+}
+
+int runReference(const ReferenceCommandOptions& o) {
+  std::vector<std::string> sets = o.sets;
+  if (o.width > 0) sets.push_back("render.width=" + std::to_string(o.width));
+  if (o.height > 0) sets.push_back("render.height=" + std::to_string(o.height));
+  Scene scene;
+  try {
+    scene = o.scene.empty() ? loadSceneText(defaultSceneText(), "<default scene>", sets) : loadSceneFile(o.scene, sets);
+  } catch (const SceneError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  const std::string ext = std::filesystem::path(o.output).extension().string();
+  if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr") {
+    std::cerr << "mpr reference: output '" << o.output << "' must end in .png, .tif, .tiff or .exr\n";
+    return 2;
+  }
+  ReferenceOptions options;
+  options.samplesPerPixel = o.spp;
+  options.bounces = o.bounces;
+  options.threads = o.threads;
+  options.model = o.model == "physical" ? ShadingModel::Physical : ShadingModel::Pipeline;
+  const bool tty = isatty(2);
+  const auto t0 = std::chrono::steady_clock::now();
+  if (tty)
+    options.progress = [&](int rows, int total) {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double eta = rows > 0 ? s * (total - rows) / rows : 0.0;
+      std::cerr << "\rreference: row " << rows << " of " << total << ", ETA " << fixed(eta, 1) << " s   " << std::flush;
+    };
+  const ReferenceImage image = renderReference(scene, options);
+  if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  try {
+    const std::filesystem::path out(o.output);
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    writeReferenceImage(image, o.output);
+  } catch (const std::exception& e) {
+    std::cerr << "mpr reference: " << e.what() << "\n";
+    return 1;
+  }
+  const ReferenceStats& s = image.stats;
+  const double rays = static_cast<double>(s.cameraRays + s.specularRays + s.shadowRays);
+  std::cerr << "traced " << scene.file << " (" << image.width << "x" << image.height << ", " << o.spp << " spp, "
+            << o.model << ") to " << o.output << " in " << fixed(s.seconds, 2) << " s ("
+            << fixed(s.seconds > 0.0 ? rays / s.seconds / 1e6 : 0.0, 2) << " M rays/s)\n";
+  return 0;
+}
+
+}  // namespace
+
+void addReferenceCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<ReferenceCommandOptions>();
+  CLI::App* c = app.add_subcommand("reference", "Trace a scene with the reference ray tracer (default: the default scene)");
+  c->footer(
+      "A Whitted ray tracer over the scene model (not over GL calls): exact shadows, area lights,\n"
+      "mirrors, refraction and the light they pass on. The render switches and recursion_depth of the\n"
+      "scene are the pipeline's and are ignored. The bytes do not depend on --threads.\n"
+      "Scene errors print FILE:LINE:COLUMN, exit with status 2 and write nothing.");
+  c->add_option("scene", o->scene, "scene file (YAML); none traces the default scene");
+  c->add_option("-o,--output", o->output, "output image: .png, .tif, .tiff (8-bit) or .exr (linear float)");
+  c->add_option("--spp", o->spp, "samples per pixel, stratified (default 16)")->check(CLI::Range(1, 65536));
+  c->add_option("--model", o->model, "local model: pipeline (GL 1.x lighting) or physical (Ward's eq. 5 where roughness is given)")
+      ->check(CLI::IsMember({"pipeline", "physical"}));
+  c->add_option("--bounces", o->bounces, "specular faces a path may pass (default: until its weight is below 1/512)")
+      ->check(CLI::Range(-1, 100));
+  c->add_option("--threads", o->threads, "worker threads (default: every hardware thread)")->check(CLI::Range(0, 1024));
+  c->add_option("--width", o->width, "image width (overrides render.width)");
+  c->add_option("--height", o->height, "image height (overrides render.height)");
+  c->add_option("--set", o->sets, "override a scene value: key.path=value (repeatable)");
+  c->callback([o, &exitCode] { exitCode = runReference(*o); });
+}
+
+}  // namespace mpr::cli

@@ -1,0 +1,24 @@
+#pragma once
+// Snell's law for the reference, both ways round: the direction a ray takes
+// through an interface, and the point where light from A must cross a plane
+// to reach B.
+#include <optional>
+
+#include "pipeline/vecmath.hpp"
+#include "reference/specular_face.hpp"
+
+namespace mpr {
+
+// The refracted direction of unit `d` at a surface with unit normal `n` on
+// the incident side (dot(d, n) < 0), eta = n_incident / n_transmitted;
+// nothing past the critical angle (total internal reflection).
+std::optional<DVec3> refractDirection(DVec3 d, DVec3 n, double eta);
+
+// The point X on the face's plane where a path a -> X -> b obeys Snell's law
+// (n_a sin(theta_a) = n_b sin(theta_b), in the plane of incidence spanned by
+// the normal and a, b), a and b on opposite sides, the media by the change
+// of medium model (front: air, behind: the face's ior). Nothing when a and b
+// are on the same side. X is not checked against the polygon.
+std::optional<DVec3> snellCrossing(const SpecularFace& face, DVec3 a, DVec3 b);
+
+}  // namespace mpr

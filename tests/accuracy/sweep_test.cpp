@@ -1,0 +1,75 @@
+// What a sweep renders: one key at a time around the scene, or the product;
+// duplicates of the scene's own values left out.
+#include "reference/accuracy/sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "scene/scene_loader.hpp"
+
+namespace mpr {
+namespace {
+
+TEST(Sweep, ParsesKeyAndValues) {
+  const VaryKey k = parseVary("render.recursion_depth=0,1,2");
+  EXPECT_EQ(k.key, "render.recursion_depth");
+  EXPECT_EQ(k.values, (std::vector<std::string>{"0", "1", "2"}));
+  EXPECT_THROW(parseVary("render.recursion_depth"), std::invalid_argument);
+  EXPECT_THROW(parseVary("=1,2"), std::invalid_argument);
+  EXPECT_THROW(parseVary("render.shadows="), std::invalid_argument);
+  EXPECT_THROW(parseVary("render.recursion_depth=1,,2"), std::invalid_argument);
+  EXPECT_THROW(parseVary("render.recursion_depth=1,"), std::invalid_argument);
+}
+
+TEST(Sweep, OneKeyAtATimeStartsWithTheScene) {
+  const auto s = expandSweep({{"a", {"1", "2"}}, {"b", {"x"}}}, false);
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_EQ(s[0].label(), "scene");
+  EXPECT_EQ(s[1].label(), "a=1");
+  EXPECT_EQ(s[2].label(), "a=2");
+  EXPECT_EQ(s[3].label(), "b=x");
+  EXPECT_EQ(s[3].sets(), (std::vector<std::string>{"b=x"}));
+}
+
+TEST(Sweep, ProductIsEveryCombination) {
+  const auto s = expandSweep({{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}}, true);
+  ASSERT_EQ(s.size(), 1u + 6u);
+  EXPECT_EQ(s[1].label(), "a=1 b=x");
+  EXPECT_EQ(s[6].label(), "a=2 b=z");
+}
+
+TEST(Sweep, TheDefaultSweepNamesKeysTheLoaderKnows) {
+  for (const VaryKey& k : defaultSweep())
+    for (const std::string& v : k.values)
+      EXPECT_NO_THROW(loadSceneText(defaultSceneText(), "<default>", {k.key + "=" + v})) << k.key << "=" << v;
+}
+
+// The default scene has recursion_depth 2: that value loads to the scene
+// itself, and the fingerprint says so; 3 does not.
+TEST(Sweep, TheScenesOwnValueIsTheSameScene) {
+  const Scene base = loadSceneText(defaultSceneText(), "<default>");
+  const Scene same = loadSceneText(defaultSceneText(), "<default>", {"render.recursion_depth=2"});
+  const Scene other = loadSceneText(defaultSceneText(), "<default>", {"render.recursion_depth=3"});
+  const Scene moved = loadSceneText(defaultSceneText(), "<default>", {"camera.fov=50"});
+  EXPECT_EQ(sceneFingerprint(base), sceneFingerprint(same));
+  EXPECT_NE(sceneFingerprint(base), sceneFingerprint(other));
+  EXPECT_NE(sceneFingerprint(base), sceneFingerprint(moved));
+  EXPECT_EQ(*sceneValue(base, "render.recursion_depth"), "2");
+  EXPECT_EQ(*sceneValue(base, "render.refraction_map"), "projection");
+  EXPECT_EQ(*sceneValue(base, "render.shadows"), "true");
+  EXPECT_EQ(*sceneValue(moved, "camera.fov"), "50");
+  EXPECT_FALSE(sceneValue(base, "ambient").has_value());
+}
+
+TEST(Sweep, TheSinglePassBaselineTurnsEveryEffectOff) {
+  const Scene s = loadSceneText(defaultSceneText(), "<default>", singlePassSets());
+  EXPECT_FALSE(s.render.shadows);
+  EXPECT_FALSE(s.render.reflections);
+  EXPECT_FALSE(s.render.refractions);
+  EXPECT_FALSE(s.render.translucency);
+  EXPECT_FALSE(s.render.frosted);
+}
+
+}  // namespace
+}  // namespace mpr
