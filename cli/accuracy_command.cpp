@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli/page_folder.hpp"
+#include "cli/scene_arguments.hpp"
 #include "reference/accuracy/accuracy_plot.hpp"
 #include "reference/accuracy/accuracy_report.hpp"
 #include "reference/accuracy/pipeline_measurement.hpp"
@@ -52,7 +53,7 @@ class AccuracyRun {
     validateOptions();
     const std::vector<VaryKey> keys = varyKeys();
     for (const VaryKey& k : keys) report_.keys.push_back(k.key);
-    base_ = load(baseSets(), "");
+    base_ = load({}, "");
     report_.scene = base_.file;
     report_.width = base_.render.width;
     report_.height = base_.render.height;
@@ -88,20 +89,10 @@ class AccuracyRun {
     return keys;
   }
 
-  std::vector<std::string> baseSets() const {
-    std::vector<std::string> s = o_.sets;
-    if (o_.width > 0) s.push_back("render.width=" + std::to_string(o_.width));
-    if (o_.height > 0) s.push_back("render.height=" + std::to_string(o_.height));
-    return s;
-  }
-
   // Loads the scene with the base sets and `more`; `what` names the option in errors.
-  Scene load(std::vector<std::string> more, const std::string& what) const {
-    std::vector<std::string> sets = baseSets();
-    sets.insert(sets.end(), more.begin(), more.end());
+  Scene load(const std::vector<std::string>& more, const std::string& what) const {
     try {
-      return o_.scene.empty() ? loadSceneText(defaultSceneText(), "<default scene>", sets)
-                              : loadSceneFile(o_.scene, sets);
+      return loadCommandScene(o_.scene, o_.sets, o_.width, o_.height, more);
     } catch (const SceneError& e) {
       std::string m = e.what();
       // A bad --vary value is reported by the loader as its --set

@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli/scene_arguments.hpp"
 #include "reference/reference_image.hpp"
 #include "reference/reference_renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -34,19 +35,15 @@ std::string fixed(double v, int digits) {
 }
 
 int runReference(const ReferenceCommandOptions& o) {
-  std::vector<std::string> sets = o.sets;
-  if (o.width > 0) sets.push_back("render.width=" + std::to_string(o.width));
-  if (o.height > 0) sets.push_back("render.height=" + std::to_string(o.height));
   Scene scene;
   try {
-    scene = o.scene.empty() ? loadSceneText(defaultSceneText(), "<default scene>", sets) : loadSceneFile(o.scene, sets);
+    scene = loadCommandScene(o.scene, o.sets, o.width, o.height);
   } catch (const SceneError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   }
-  const std::string ext = std::filesystem::path(o.output).extension().string();
-  if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr") {
-    std::cerr << "mpr reference: output '" << o.output << "' must end in .png, .tif, .tiff or .exr\n";
+  if (const std::string problem = imageOutputProblem("reference", o.output); !problem.empty()) {
+    std::cerr << problem << "\n";
     return 2;
   }
   ReferenceOptions options;

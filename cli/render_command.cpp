@@ -10,6 +10,7 @@
 
 #include "algorithms/gl_command_stream.hpp"
 #include "algorithms/scene_renderer.hpp"
+#include "cli/scene_arguments.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
 #include "scene/scene_loader.hpp"
@@ -60,19 +61,15 @@ int runRender(const RenderOptions& o) {
     std::cout << describeSceneFormat();
     return 0;
   }
-  std::vector<std::string> sets = o.sets;
-  if (o.width > 0) sets.push_back("render.width=" + std::to_string(o.width));
-  if (o.height > 0) sets.push_back("render.height=" + std::to_string(o.height));
   Scene scene;
   try {
-    scene = o.scene.empty() ? loadSceneText(defaultSceneText(), "<default scene>", sets) : loadSceneFile(o.scene, sets);
+    scene = loadCommandScene(o.scene, o.sets, o.width, o.height);
   } catch (const SceneError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   }
-  const std::string ext = std::filesystem::path(o.output).extension().string();
-  if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr") {
-    std::cerr << "mpr render: output '" << o.output << "' must end in .png, .tif, .tiff or .exr\n";
+  if (const std::string problem = imageOutputProblem("render", o.output); !problem.empty()) {
+    std::cerr << problem << "\n";
     return 2;
   }
   std::unique_ptr<GLContext> gl;

@@ -1,28 +1,16 @@
 #include "reference/reference_image.hpp"
 
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <cctype>
-#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
 #include "framebuffer/fragment_ops.hpp"
+#include "framebuffer/image_writer.hpp"
 
 namespace mpr {
 namespace {
-
-std::string temporaryNameFor(const std::string& path) {
-  const std::filesystem::path p(path);
-  // The extension stays last so that OpenImageIO picks the format.
-  // Appended piece by piece: "." + string trips GCC 12's -Wrestrict.
-  std::string name = ".";
-  name += p.stem().string();
-  name += ".tmp" + std::to_string(::getpid());
-  name += p.extension().string();
-  return (p.parent_path() / name).string();
-}
 
 bool floatFormat(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -39,35 +27,8 @@ std::vector<std::uint8_t> quantiseToRgb8(const ReferenceImage& image) {
 }
 
 void writeReferenceImage(const ReferenceImage& image, const std::string& path) {
-  const int w = image.width, h = image.height;
-  const bool linear = floatFormat(path);
-  const std::vector<std::uint8_t> bytes = linear ? std::vector<std::uint8_t>{} : quantiseToRgb8(image);
-  // Flip to top row first.
-  std::vector<float> floats;
-  std::vector<std::uint8_t> rows;
-  const std::size_t stride = static_cast<std::size_t>(w) * 3;
-  for (int y = h - 1; y >= 0; --y) {
-    const std::size_t at = static_cast<std::size_t>(y) * stride;
-    if (linear) floats.insert(floats.end(), image.rgb.begin() + at, image.rgb.begin() + at + stride);
-    else rows.insert(rows.end(), bytes.begin() + at, bytes.begin() + at + stride);
-  }
-  const OIIO::TypeDesc type = linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-  const std::string tmp = temporaryNameFor(path);
-  const OIIO::ImageSpec spec(w, h, 3, type);
-  const void* data = linear ? static_cast<const void*>(floats.data()) : static_cast<const void*>(rows.data());
-  if (!out->open(tmp, spec) || !out->write_image(type, data) || !out->close()) {
-    const std::string why = out->geterror();
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + why);
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
-  }
+  if (floatFormat(path)) writeRgbImage(path, image.width, image.height, image.rgb.data());
+  else writeRgbImage(path, image.width, image.height, quantiseToRgb8(image).data());
 }
 
 ReferenceImage readReferenceImage(const std::string& path) {

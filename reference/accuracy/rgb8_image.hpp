@@ -15,7 +15,7 @@ struct Rgb8Image {
 };
 
 // The reference quantised exactly as the pipeline quantises a colour
-// (framebuffer/fragment_ops.hpp floatToUnorm8: clamp, v * 255 in float,
+// (reference_image.hpp quantiseToRgb8, floatToUnorm8: clamp, v * 255 in float,
 // rounded to nearest with ties to even).
 Rgb8Image quantiseReference(const ReferenceImage& image);
 

@@ -58,14 +58,14 @@ TEST(AccuracyReport, CsvHasTheKeysThenTheMeasures) {
 TEST(AccuracyReport, JsonAndHtmlNameEverySetting) {
   const AccuracyReport r = sample();
   const std::string json = resultsJson(r), html = reportHtml(r, accuracyPlotSvg(r));
-  for (const std::string& s : {"\"render.recursion_depth=0\"", "\"single_pass\"", "\"rms_percent\": 12.000"})
+  for (const char* s : {"\"render.recursion_depth=0\"", "\"single_pass\"", "\"rms_percent\": 12.000"})
     EXPECT_NE(json.find(s), std::string::npos) << s;
   EXPECT_NE(html.find("<meta name=\"generator\" content=\"mpr accuracy\">"), std::string::npos);
   EXPECT_NE(html.find("<svg"), std::string::npos);
 }
 
-// Two settings and the baseline: three marks; both settings are on the
-// front (the faster is less accurate), so the front line joins two points.
+// Two settings and the baseline: two circles and a square; all three are on
+// the front (each faster one is less accurate), joined by one line.
 TEST(AccuracyReport, PlotMarksEverySettingAndTheFront) {
   const std::string svg = accuracyPlotSvg(sample());
   std::size_t circles = 0, pos = 0;

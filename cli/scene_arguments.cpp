@@ -1,0 +1,29 @@
+#include "cli/scene_arguments.hpp"
+
+#include <filesystem>
+
+#include "scene/scene_loader.hpp"
+
+namespace mpr::cli {
+
+std::vector<std::string> commandSets(const std::vector<std::string>& sets, int width, int height) {
+  std::vector<std::string> s = sets;
+  if (width > 0) s.push_back("render.width=" + std::to_string(width));
+  if (height > 0) s.push_back("render.height=" + std::to_string(height));
+  return s;
+}
+
+Scene loadCommandScene(const std::string& file, const std::vector<std::string>& sets, int width, int height,
+                       const std::vector<std::string>& more) {
+  std::vector<std::string> s = commandSets(sets, width, height);
+  s.insert(s.end(), more.begin(), more.end());
+  return file.empty() ? loadSceneText(defaultSceneText(), "<default scene>", s) : loadSceneFile(file, s);
+}
+
+std::string imageOutputProblem(const std::string& command, const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr") return "";
+  return "mpr " + command + ": output '" + path + "' must end in .png, .tif, .tiff or .exr";
+}
+
+}  // namespace mpr::cli

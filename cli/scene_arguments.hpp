@@ -1,0 +1,24 @@
+#pragma once
+// What `render`, `reference` and `accuracy` share: the scene they work on
+// and the image files they accept.
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace mpr::cli {
+
+// The scene file (none: the embedded default scene) with the --set
+// overrides, then --width and --height where given (> 0), and `more`.
+// Throws SceneError (FILE:LINE:COLUMN) as the loader does.
+Scene loadCommandScene(const std::string& file, const std::vector<std::string>& sets, int width, int height,
+                       const std::vector<std::string>& more = {});
+
+// The --set list the above applies before `more`.
+std::vector<std::string> commandSets(const std::vector<std::string>& sets, int width, int height);
+
+// Why `command` cannot write an image to `path`, or empty: the format
+// follows the extension, .png, .tif, .tiff or .exr.
+std::string imageOutputProblem(const std::string& command, const std::string& path);
+
+}  // namespace mpr::cli
