@@ -21,6 +21,35 @@ void addFlatFace(Mesh& m, const std::vector<Vec3>& corners, const Vec3& normal) 
   m.faces.push_back(std::move(face));
 }
 
+// One coordinate of the lattice of a subdivided unit primitive: every face
+// computes a shared edge's points by this one expression, so they are bit
+// for bit the same on both faces (meshes weld closed, no cracks between
+// faces). d = 1 gives exactly -0.5 and 0.5.
+float lattice(int k, int d) { return -0.5f + static_cast<float>(k) / static_cast<float>(d); }
+
+// A flat side of a unit primitive as a d x d grid of cells sharing their
+// corners. `origin` is a lattice point, `u` and `v` unit lattice steps with
+// u x v along `normal` (counter-clockwise seen from outside). The cells split
+// along the diagonal from their first corner, as addFlatFace splits a quad;
+// the side stays one polygon in `faces` (the planar-face checks and the
+// specular faces see the side, not its cells).
+void addGridFace(Mesh& m, glm::ivec3 origin, glm::ivec3 u, glm::ivec3 v, const Vec3& normal, int d) {
+  const auto base = static_cast<std::uint32_t>(m.positions.size());
+  for (int j = 0; j <= d; ++j)
+    for (int i = 0; i <= d; ++i) {
+      const glm::ivec3 q = origin + i * u + j * v;
+      m.positions.emplace_back(lattice(q.x, d), lattice(q.y, d), lattice(q.z, d));
+      m.normals.push_back(normal);
+    }
+  const auto at = [&](int i, int j) { return base + static_cast<std::uint32_t>(j * (d + 1) + i); };
+  for (int j = 0; j < d; ++j)
+    for (int i = 0; i < d; ++i) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  m.faces.push_back({at(0, 0), at(d, 0), at(d, d), at(0, d)});
+}
+
 }  // namespace
 
 std::size_t Scene::triangleCount() const {
@@ -29,8 +58,19 @@ std::size_t Scene::triangleCount() const {
   return n;
 }
 
-Mesh makeBox() {
+Mesh makeBox(int divisions) {
   Mesh m;
+  if (divisions > 1) {
+    // Lattice coordinates 0..d; each side as makeBox's corners below order it.
+    const int d = divisions;
+    addGridFace(m, {0, 0, d}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, d);
+    addGridFace(m, {d, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, 0, -1}, d);
+    addGridFace(m, {d, 0, d}, {0, 0, -1}, {0, 1, 0}, {1, 0, 0}, d);
+    addGridFace(m, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {-1, 0, 0}, d);
+    addGridFace(m, {0, d, d}, {1, 0, 0}, {0, 0, -1}, {0, 1, 0}, d);
+    addGridFace(m, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, -1, 0}, d);
+    return m;
+  }
   const float h = 0.5f;
   addFlatFace(m, {{-h, -h, h}, {h, -h, h}, {h, h, h}, {-h, h, h}}, {0, 0, 1});
   addFlatFace(m, {{h, -h, -h}, {-h, -h, -h}, {-h, h, -h}, {h, h, -h}}, {0, 0, -1});
@@ -98,8 +138,16 @@ Mesh makeCylinder(int slices) {
   return m;
 }
 
-Mesh makeQuad() {
+Mesh makeQuad(int divisions) {
   Mesh m;
+  if (divisions > 1) {
+    // The z = 0 slice of the lattice: the plane through its middle.
+    const int d = divisions;
+    const auto base = m.positions.size();
+    addGridFace(m, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, d);
+    for (std::size_t i = base; i < m.positions.size(); ++i) m.positions[i].z = 0.0f;
+    return m;
+  }
   addFlatFace(m, {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}}, {0, 0, 1});
   return m;
 }
@@ -112,6 +160,14 @@ Mesh makePlane(int divisions) {
       const float x0 = -0.5f + static_cast<float>(i) * step, z0 = 0.5f - static_cast<float>(j) * step;
       addFlatFace(m, {{x0, 0, z0}, {x0 + step, 0, z0}, {x0 + step, 0, z0 - step}, {x0, 0, z0 - step}}, {0, 1, 0});
     }
+  // The plane is one polygon for the planar-face checks and the specular
+  // faces (a mirror plane is one mirror, not a mirror per cell): the outer
+  // corners of the corner cells.
+  const auto corner = [&](int i, int j, std::uint32_t k) {
+    return static_cast<std::uint32_t>(4 * (j * divisions + i)) + k;
+  };
+  const int e = divisions - 1;
+  m.faces = {{corner(0, 0, 0), corner(e, 0, 1), corner(e, e, 2), corner(0, e, 3)}};
   return m;
 }
 

@@ -83,6 +83,9 @@ struct RenderSettings {
   bool shadows = true, reflections = true, refractions = true, translucency = true, frosted = true;
   std::string profile = "indigo";
   RefractionMap refractionMap = RefractionMap::ProjectionKeptZ;
+  // The longest edge of a lit triangle the pipeline draws (world units): the
+  // planner splits larger ones for GL's per-vertex lighting (0: as modelled).
+  float tessellation = 0.0f;
 };
 
 struct Scene {

@@ -61,7 +61,8 @@ const std::vector<KeySpec> kObjectKeys = {
     {"name", "string", "for messages and statistics"},
     {"primitive", "box | sphere | cylinder | quad | plane", "a built-in shape (or `mesh`)"},
     {"mesh", "path", "OBJ, OFF, PLY or STL file, relative to the scene file (or `primitive`)"},
-    {"subdivisions", "integer >= 1", "sphere slices (stacks are half), cylinder slices, plane divisions"},
+    {"subdivisions", "integer >= 1",
+     "sphere slices (stacks are half), cylinder slices, plane, quad and box-side divisions (cells per side)"},
     {"translate", "vec3", "applied last"}, {"rotate", "[degrees, x, y, z]", "applied after scale"},
     {"scale", "number or vec3", "applied first"}, {"material", "name", "a key of `materials`"},
     {"casts_shadows", "bool",
@@ -79,6 +80,9 @@ const std::vector<KeySpec> kRenderKeys = {
     {"frosted", "bool", "default true"}, {"profile", "indigo | mesa", "hardware profile, default indigo"},
     {"refraction_map", "projection | projection_zeroed_z | end_of_pipeline",
      "where a refracted view's image map M3 is applied, default projection (the 4x4 with Z kept)"},
+    {"tessellation", "number >= 0",
+     "the longest edge of a lit triangle the pipeline draws (larger ones are split for GL's per-vertex lighting), "
+     "world units; default 0: as modelled"},
 };
 
 struct Override {
@@ -219,6 +223,8 @@ class Loader {
       r.profile = string(n["profile"], "render.profile");
       if (!findProfile(r.profile)) fail(n["profile"], "unknown profile '" + r.profile + "' (known: indigo, mesa)");
     }
+    if (n["tessellation"])
+      r.tessellation = static_cast<float>(number(n["tessellation"], "render.tessellation", 0.0, 1e6));
     if (n["refraction_map"]) {
       const std::string m = string(n["refraction_map"], "render.refraction_map");
       if (m == "projection") r.refractionMap = RefractionMap::ProjectionKeptZ;
@@ -317,10 +323,15 @@ class Loader {
     const int sub = n["subdivisions"] ? integer(n["subdivisions"], where + " subdivisions", 1, 4096) : 0;
     if (n["primitive"]) {
       const std::string p = string(n["primitive"], where + " primitive");
-      if (p == "box") o.mesh = makeBox();
+      // Grids grow with the square of their divisions: 1024 gives a quad of
+      // 2 M triangles, a box of 12.6 M (about 1 GB of mesh at most).
+      if ((p == "box" || p == "quad" || p == "plane") && sub > 1024)
+        fail(n["subdivisions"], where + " subdivisions must be at most 1024 for a " + p + " (its cells grow with the square), not " +
+                                    std::to_string(sub));
+      if (p == "box") o.mesh = makeBox(sub ? sub : 1);
       else if (p == "sphere") o.mesh = makeSphere(sub ? sub : 32, sub ? std::max(2, sub / 2) : 16);
       else if (p == "cylinder") o.mesh = makeCylinder(sub ? std::max(3, sub) : 32);
-      else if (p == "quad") o.mesh = makeQuad(), o.castsShadows = false;
+      else if (p == "quad") o.mesh = makeQuad(sub ? sub : 1), o.castsShadows = false;
       else if (p == "plane") o.mesh = makePlane(sub ? sub : 1), o.castsShadows = false;
       else fail(n["primitive"], where + " primitive must be box, sphere, cylinder, quad or plane, not '" + p + "'");
     } else {

@@ -48,7 +48,8 @@ std::vector<VaryKey> defaultSweep() {
   return {{"render.recursion_depth", {"0", "1", "2", "3"}},
           {"render.shadow_recursion_depth", {"0", "1", "2"}},
           {"render.shadows", {"true", "false"}},
-          {"render.refraction_map", {"projection", "projection_zeroed_z", "end_of_pipeline"}}};
+          {"render.refraction_map", {"projection", "projection_zeroed_z", "end_of_pipeline"}},
+          {"render.tessellation", {"1", "0.5", "0.25"}}};
 }
 
 std::vector<std::string> SweepSetting::sets() const {
@@ -104,11 +105,11 @@ std::string sceneFingerprint(const Scene& s) {
     o << "O" << ob.material << ob.castsShadows << ' ' << ob.mesh.positions.size() << ' ' << ob.mesh.triangles.size();
     if (!ob.mesh.positions.empty()) o << vec(ob.mesh.positions.front()) << vec(ob.mesh.positions.back());
   }
-  for (const std::string& k : {"render.width", "render.height", "render.recursion_depth",
+  for (const char* k : {"render.width", "render.height", "render.recursion_depth",
                                "render.shadow_recursion_depth", "render.soft_shadow_samples",
                                "render.antialias_samples", "render.shadows", "render.reflections",
                                "render.refractions", "render.translucency", "render.frosted", "render.profile",
-                               "render.refraction_map"})
+                               "render.refraction_map", "render.tessellation"})
     o << "R" << *sceneValue(s, k);
   return o.str();
 }
@@ -131,6 +132,7 @@ std::optional<std::string> sceneValue(const Scene& s, const std::string& key) {
   if (key == "render.frosted") return b(r.frosted);
   if (key == "render.profile") return r.profile;
   if (key == "render.refraction_map") return refractionMapName(r.refractionMap);
+  if (key == "render.tessellation") return (num << r.tessellation, num.str());
   if (key == "camera.fov") return (num << s.camera.fovY, num.str());
   if (key == "camera.near") return (num << s.camera.near, num.str());
   if (key == "camera.far") return (num << s.camera.far, num.str());

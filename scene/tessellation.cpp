@@ -1,0 +1,73 @@
+#include "scene/tessellation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace mpr {
+namespace {
+
+bool lexicallyLess(const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); }
+
+// The point m/k of the way along the edge (u, v), the same from either end.
+Vec3 edgePoint(Vec3 u, Vec3 v, int m, int k) {
+  if (lexicallyLess(v, u)) std::swap(u, v), m = k - m;
+  const float t = static_cast<float>(m) / static_cast<float>(k);
+  return u + (v - u) * t;
+}
+
+float longestEdge(const Mesh& mesh) {
+  float longest = 0.0f;
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e)
+      longest = std::max(longest, glm::length(mesh.positions[t[e]] - mesh.positions[t[(e + 1) % 3]]));
+  return longest;
+}
+
+// Triangle (a, b, c) as the k x k lattice of barycentric points (i/k, j/k):
+// i along a->b, j along a->c, counter-clockwise as the triangle is.
+void splitTriangle(const Mesh& in, const std::array<std::uint32_t, 3>& t, int k, Mesh& out) {
+  const Vec3 a = in.positions[t[0]], b = in.positions[t[1]], c = in.positions[t[2]];
+  const Vec3 na = in.normals[t[0]], nb = in.normals[t[1]], nc = in.normals[t[2]];
+  std::vector<std::uint32_t> index((k + 1) * (k + 1));
+  for (int j = 0; j <= k; ++j)
+    for (int i = 0; i + j <= k; ++i) {
+      Vec3 p;
+      if (j == 0) p = edgePoint(a, b, i, k);
+      else if (i == 0) p = edgePoint(a, c, j, k);
+      else if (i + j == k) p = edgePoint(b, c, j, k);
+      else p = a + (b - a) * (static_cast<float>(i) / k) + (c - a) * (static_cast<float>(j) / k);
+      const float wb = static_cast<float>(i) / k, wc = static_cast<float>(j) / k;
+      Vec3 n = na * (1.0f - wb - wc) + nb * wb + nc * wc;
+      const float len = glm::length(n);
+      if (len > 0.0f) n /= len;
+      index[j * (k + 1) + i] = static_cast<std::uint32_t>(out.positions.size());
+      out.positions.push_back(p);
+      out.normals.push_back(n);
+    }
+  const auto at = [&](int i, int j) { return index[j * (k + 1) + i]; };
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i + j < k; ++i) {
+      out.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      if (i + j + 1 < k) out.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+}
+
+}  // namespace
+
+void tessellateLitObjects(Scene& scene, float maxEdge) {
+  if (!(maxEdge > 0.0f)) return;
+  for (SceneObject& o : scene.objects) {
+    if (scene.materials[static_cast<std::size_t>(o.material)].specularKind() || o.mesh.triangles.empty()) continue;
+    int k = std::clamp(static_cast<int>(std::ceil(longestEdge(o.mesh) / maxEdge)), 1, kMaxTessellationDivisions);
+    while (k > 1 && o.mesh.triangles.size() * static_cast<std::size_t>(k) * k > kMaxTessellatedTriangles) --k;
+    if (k == 1) continue;
+    // Faces matter only to specular objects (planar-face checks, ref faces):
+    // a lit object's are not kept.
+    Mesh out;
+    for (const auto& t : o.mesh.triangles) splitTriangle(o.mesh, t, k, out);
+    o.mesh = std::move(out);
+  }
+}
+
+}  // namespace mpr

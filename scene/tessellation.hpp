@@ -1,0 +1,24 @@
+#pragma once
+// Tessellation of lit faces for GL's per-vertex lighting (render.tessellation).
+// GL lights a triangle at its corners and interpolates the colours
+// (Gouraud): a wall that is one quad, its corners far from the light, is
+// too dark in the middle. Splitting its triangles gives the lighting more
+// places to be evaluated; the surface stays the same.
+#include "scene/scene.hpp"
+
+namespace mpr {
+
+// The cap on the divisions of one triangle's edges, and on the triangles
+// one object may grow to (the divisions are lowered to stay under it).
+inline constexpr int kMaxTessellationDivisions = 64;
+inline constexpr std::size_t kMaxTessellatedTriangles = 2'000'000;
+
+// Splits every triangle of every diffuse object into k x k triangles, one k
+// per object: the smallest with every edge of the object at most `maxEdge`
+// long after the split. A point on an edge is computed from the edge's two
+// ends in a fixed (lexicographic) order, so triangles sharing an edge share
+// its points bit for bit: no cracks, no T-junctions. Specular objects keep
+// their faces (the recursion looks through them as polygons).
+void tessellateLitObjects(Scene& scene, float maxEdge);
+
+}  // namespace mpr
