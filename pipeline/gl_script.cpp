@@ -19,9 +19,7 @@
 namespace mpr {
 namespace {
 
-// Argument kinds of the signature table.
-//   i integer, f float, e enum, b bitfield, z boolean, u unsigned byte,
-//   m 16 floats (matrix), v the rest as floats (count fixed by the pname)
+// The signatures are gl_calls.def's (pipeline/gl_call.hpp).
 struct CallSpec {
   std::string_view name;
   GLCall call;
@@ -29,72 +27,8 @@ struct CallSpec {
 };
 
 constexpr CallSpec kCalls[] = {
-    {"glViewport", GLCall::Viewport, "iiii"},
-    {"glScissor", GLCall::Scissor, "iiii"},
-    {"glClearColor", GLCall::ClearColor, "ffff"},
-    {"glClearDepth", GLCall::ClearDepth, "f"},
-    {"glClearStencil", GLCall::ClearStencil, "i"},
-    {"glClearAccum", GLCall::ClearAccum, "ffff"},
-    {"glClear", GLCall::Clear, "b"},
-    {"glColorMask", GLCall::ColorMask, "zzzz"},
-    {"glDepthMask", GLCall::DepthMask, "z"},
-    {"glStencilMask", GLCall::StencilMask, "i"},
-    {"glFinish", GLCall::Finish, ""},
-    {"glFlush", GLCall::Flush, ""},
-    {"glEnable", GLCall::Enable, "e"},
-    {"glDisable", GLCall::Disable, "e"},
-    {"glStencilFunc", GLCall::StencilFunc, "eii"},
-    {"glStencilOp", GLCall::StencilOp, "eee"},
-    {"glDepthFunc", GLCall::DepthFunc, "e"},
-    {"glDepthRange", GLCall::DepthRange, "ff"},
-    {"glBlendFunc", GLCall::BlendFunc, "ee"},
-    {"glAlphaFunc", GLCall::AlphaFunc, "ef"},
-    {"glCullFace", GLCall::CullFace, "e"},
-    {"glFrontFace", GLCall::FrontFace, "e"},
-    {"glShadeModel", GLCall::ShadeModel, "e"},
-    {"glFogf", GLCall::Fogf, "ef"},
-    {"glFogi", GLCall::Fogi, "ei"},
-    {"glFogfv", GLCall::Fogfv, "ev"},
-    {"glHint", GLCall::Hint, "ee"},
-    {"glMatrixMode", GLCall::MatrixMode, "e"},
-    {"glLoadIdentity", GLCall::LoadIdentity, ""},
-    {"glLoadMatrixf", GLCall::LoadMatrixf, "m"},
-    {"glLoadMatrixd", GLCall::LoadMatrixd, "m"},
-    {"glMultMatrixf", GLCall::MultMatrixf, "m"},
-    {"glMultMatrixd", GLCall::MultMatrixd, "m"},
-    {"glPushMatrix", GLCall::PushMatrix, ""},
-    {"glPopMatrix", GLCall::PopMatrix, ""},
-    {"glTranslatef", GLCall::Translatef, "fff"},
-    {"glTranslated", GLCall::Translated, "fff"},
-    {"glRotatef", GLCall::Rotatef, "ffff"},
-    {"glRotated", GLCall::Rotated, "ffff"},
-    {"glScalef", GLCall::Scalef, "fff"},
-    {"glScaled", GLCall::Scaled, "fff"},
-    {"glFrustum", GLCall::Frustum, "ffffff"},
-    {"glOrtho", GLCall::Ortho, "ffffff"},
-    {"gluPerspective", GLCall::Perspective, "ffff"},
-    {"gluLookAt", GLCall::LookAt, "fffffffff"},
-    {"glClipPlane", GLCall::ClipPlane, "effff"},
-    {"glLightf", GLCall::Lightf, "eef"},
-    {"glLightfv", GLCall::Lightfv, "eev"},
-    {"glLightModelf", GLCall::LightModelf, "ef"},
-    {"glLightModelfv", GLCall::LightModelfv, "ev"},
-    {"glLightModeli", GLCall::LightModeli, "ei"},
-    {"glMaterialf", GLCall::Materialf, "eef"},
-    {"glMaterialfv", GLCall::Materialfv, "eev"},
-    {"glColorMaterial", GLCall::ColorMaterial, "ee"},
-    {"glColor3f", GLCall::Color3f, "fff"},
-    {"glColor4f", GLCall::Color4f, "ffff"},
-    {"glColor3ub", GLCall::Color3ub, "uuu"},
-    {"glColor4ub", GLCall::Color4ub, "uuuu"},
-    {"glNormal3f", GLCall::Normal3f, "fff"},
-    {"glBegin", GLCall::Begin, "e"},
-    {"glEnd", GLCall::End, ""},
-    {"glVertex2f", GLCall::Vertex2f, "ff"},
-    {"glVertex3f", GLCall::Vertex3f, "fff"},
-    {"glVertex4f", GLCall::Vertex4f, "ffff"},
-    {"glRectf", GLCall::Rectf, "ffff"},
-    {"glAccum", GLCall::Accum, "ef"},
+#define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) {#cFunction, GLCall::Enum, kinds},
+#include "pipeline/gl_calls.def"
 };
 
 const CallSpec* findCall(std::string_view name) {
@@ -214,6 +148,10 @@ class Parser {
   }
 
   ScriptArg parseArg(char kind, const Token& tok, int line, std::string_view callName, int index) const {
+    // A primitive mode parses as an enum, an enum-or-integer as an integer
+    // (the distinction only names values when a trace is written).
+    if (kind == 'p') kind = 'e';
+    if (kind == 'n') kind = 'i';
     ScriptArg a;
     a.column = tok.column;
     a.text = std::string(tok.text);
@@ -442,12 +380,6 @@ class Parser {
 };
 
 }  // namespace
-
-std::string_view glCallName(GLCall c) {
-  for (const CallSpec& s : kCalls)
-    if (s.call == c) return s.name;
-  return "?";
-}
 
 std::size_t Script::callCount() const {
   return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) {

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "pipeline/gl_call.hpp"
+
 namespace mpr {
 
 // A user error in a script: FILE:LINE:COLUMN: message.
@@ -25,23 +27,6 @@ class ScriptError : public std::runtime_error {
   std::string file_;
   int line_, column_;
 };
-
-// The calls of the spec's call set.
-enum class GLCall : std::uint8_t {
-  Viewport, Scissor, ClearColor, ClearDepth, ClearStencil, ClearAccum, Clear, ColorMask, DepthMask,
-  StencilMask, Finish, Flush,
-  Enable, Disable, StencilFunc, StencilOp, DepthFunc, DepthRange, BlendFunc, AlphaFunc, CullFace,
-  FrontFace, ShadeModel, Fogf, Fogi, Fogfv, Hint,
-  MatrixMode, LoadIdentity, LoadMatrixf, LoadMatrixd, MultMatrixf, MultMatrixd, PushMatrix, PopMatrix,
-  Translatef, Translated, Rotatef, Rotated, Scalef, Scaled, Frustum, Ortho, Perspective, LookAt, ClipPlane,
-  Lightf, Lightfv, LightModelf, LightModelfv, LightModeli, Materialf, Materialfv, ColorMaterial,
-  Color3f, Color4f, Color3ub, Color4ub, Normal3f,
-  Begin, End, Vertex2f, Vertex3f, Vertex4f, Rectf,
-  Accum,
-};
-
-// The C name of a call ("glStencilFunc").
-std::string_view glCallName(GLCall c);
 
 struct ScriptArg {
   double number = 0.0;       // the value as a number (enums: their value)
