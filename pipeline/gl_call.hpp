@@ -34,4 +34,8 @@ constexpr const GLCallInfo& glCallInfo(GLCall c) { return kGLCallInfo[static_cas
 // The C name of a call ("glStencilFunc").
 constexpr std::string_view glCallName(GLCall c) { return glCallInfo(c).name; }
 
+// The number of values a ...v call takes for its pname, or 0 for a pname the
+// function does not take (GL rejects it; a script may give 1 to 4 values).
+int glVectorCount(GLCall call, std::uint32_t pname);
+
 }  // namespace mpr

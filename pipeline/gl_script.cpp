@@ -58,41 +58,6 @@ std::string closestCallName(std::string_view name) {
   return closestMatch(name, names, 4, true);
 }
 
-// The number of values a `...v` call takes for its pname, or 0 when the pname
-// is not one the function takes (GL will reject it; any 1..4 values parse).
-int vectorCount(GLCall call, std::uint32_t pname) {
-  switch (call) {
-    case GLCall::Lightfv:
-      switch (pname) {
-        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
-        case GL_SPOT_DIRECTION: return 3;
-        case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
-        case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: return 1;
-      }
-      return 0;
-    case GLCall::Materialfv:
-      switch (pname) {
-        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: return 4;
-        case GL_COLOR_INDEXES: return 3;
-        case GL_SHININESS: return 1;
-      }
-      return 0;
-    case GLCall::Fogfv:
-      switch (pname) {
-        case GL_FOG_COLOR: return 4;
-        case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END: case GL_FOG_INDEX: return 1;
-      }
-      return 0;
-    case GLCall::LightModelfv:
-      switch (pname) {
-        case GL_LIGHT_MODEL_AMBIENT: return 4;
-        case GL_LIGHT_MODEL_LOCAL_VIEWER: case GL_LIGHT_MODEL_TWO_SIDE: return 1;
-      }
-      return 0;
-    default: return 0;
-  }
-}
-
 struct Token {
   std::string_view text;
   int column;  // 1-based
@@ -223,7 +188,7 @@ class Parser {
     Script script;
     script.file = file_;
     script.text = std::string(text);
-    bool sawCall = false, sawFramebuffer = false, sawProfile = false;
+    bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false;
     std::set<std::string> snapshots;
     int lineNo = 0;
     size_t pos = 0;
@@ -294,8 +259,35 @@ class Parser {
           script.commands.push_back(std::move(cmd));
           continue;
         }
+        if (head.text == "@window_map") {
+          // docs/gl-script-directives.md: 9 numbers (column by column) or off.
+          cmd.kind = ScriptCommand::Kind::WindowMap;
+          if (toks.size() == 2 && toks[1].text == "off") {
+            script.commands.push_back(std::move(cmd));
+            continue;
+          }
+          if (toks.size() != 10)
+            fail(lineNo, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
+          for (std::size_t t = 1; t < toks.size(); ++t)
+            cmd.args.push_back(parseArg('f', toks[t], lineNo, "@window_map", static_cast<int>(t - 1)));
+          script.commands.push_back(std::move(cmd));
+          continue;
+        }
+        if (head.text == "@count_fragments") {
+          if (toks.size() != 2 || (toks[1].text != "begin" && toks[1].text != "end"))
+            fail(lineNo, head.column, "@count_fragments takes begin or end");
+          const bool begin = toks[1].text == "begin";
+          if (begin == counting) fail(lineNo, toks[1].column, begin ? "@count_fragments begin twice without end"
+                                                                    : "@count_fragments end without begin");
+          counting = begin;
+          cmd.kind = ScriptCommand::Kind::FragmentCount;
+          cmd.label = std::string(toks[1].text);
+          script.commands.push_back(std::move(cmd));
+          continue;
+        }
         fail(lineNo, head.column, "unknown directive '" + std::string(head.text) +
-                                      "' (known: @framebuffer, @profile, @pass, @snapshot)");
+                                      "' (known: @framebuffer, @profile, @pass, @snapshot, @window_map, "
+                                      "@count_fragments)");
       }
 
       const CallSpec* spec = findCall(head.text);
@@ -329,7 +321,7 @@ class Parser {
         if (kind == 'm') {
           for (int j = 0; j < 16; ++j, ++t) cmd.args.push_back(parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
         } else if (kind == 'v') {
-          const int want = vectorCount(spec->call, cmd.args.back().bits);
+          const int want = glVectorCount(spec->call, cmd.args.back().bits);
           const size_t have = toks.size() - t;
           if (want > 0 && have != static_cast<size_t>(want))
             fail(lineNo, have > static_cast<size_t>(want) ? toks[t + want].column : endColumn,
@@ -385,6 +377,41 @@ std::size_t Script::callCount() const {
   return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) {
     return c.kind == ScriptCommand::Kind::Call;
   }));
+}
+
+// The number of values a `...v` call takes for its pname, or 0 when the pname
+// is not one the function takes (GL will reject it; any 1..4 values parse).
+int glVectorCount(GLCall call, std::uint32_t pname) {
+  switch (call) {
+    case GLCall::Lightfv:
+      switch (pname) {
+        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
+        case GL_SPOT_DIRECTION: return 3;
+        case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
+        case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: return 1;
+      }
+      return 0;
+    case GLCall::Materialfv:
+      switch (pname) {
+        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: return 4;
+        case GL_COLOR_INDEXES: return 3;
+        case GL_SHININESS: return 1;
+      }
+      return 0;
+    case GLCall::Fogfv:
+      switch (pname) {
+        case GL_FOG_COLOR: return 4;
+        case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END: case GL_FOG_INDEX: return 1;
+      }
+      return 0;
+    case GLCall::LightModelfv:
+      switch (pname) {
+        case GL_LIGHT_MODEL_AMBIENT: return 4;
+        case GL_LIGHT_MODEL_LOCAL_VIEWER: case GL_LIGHT_MODEL_TWO_SIDE: return 1;
+      }
+      return 0;
+    default: return 0;
+  }
 }
 
 Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }

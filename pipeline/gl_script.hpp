@@ -36,7 +36,9 @@ struct ScriptArg {
 };
 
 struct ScriptCommand {
-  enum class Kind : std::uint8_t { Call, Pass, Snapshot } kind = Kind::Call;
+  // A GL call, or a directive: @pass, @snapshot, @window_map (args: 9
+  // numbers, or none for off), @count_fragments (label: begin or end).
+  enum class Kind : std::uint8_t { Call, Pass, Snapshot, WindowMap, FragmentCount } kind = Kind::Call;
   int line = 0;
   GLCall call = GLCall::Finish;
   std::vector<ScriptArg> args;
