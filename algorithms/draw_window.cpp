@@ -22,21 +22,19 @@
 #include "algorithms/ref_face.hpp"
 #include "algorithms/ref_light.hpp"
 #include "algorithms/refraction.hpp"
+#include "algorithms/scene_gl.hpp"
 #include "algorithms/shadow_pass.hpp"
 #include "algorithms/view_camera.hpp"
-#include "pipeline/quad_to_quad.hpp"
 
 namespace mpr {
 namespace {
-
-constexpr int kMaxGLLights = 8;
 
 class WindowRenderer {
  public:
   WindowRenderer(const Scene& s, const RenderPlan& p, GLCommandStream& gl,
                  const std::function<void(const DrawWindowProgress&)>& progress)
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
-        shadows_(s, p) {
+        shadows_(s, p), gl_scene_(s, gl, p.shadows || p.reflections) {
     if (p.shadows) refLights_ = reflectedLights(s, faces_);
     counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
   }
@@ -127,14 +125,14 @@ class WindowRenderer {
                       s_.objects[static_cast<std::size_t>(face.object)].name + "\"");
       pass("light volume", "light volume | face_light_stencil(ref_face)");
       apply_to_screen(gl_, {GL_LEQUAL, lv_.shadMin, lv_.shadMin, lv_.max, GL_INCR});
-      setupView(cam);
-      countVolumes(gl_, {&rl.lightVolume}, cam, s_.camera, aspect(), lv_, true, true);
+      gl_scene_.setupView(cam);
+      countVolumes(gl_, {&rl.lightVolume}, cam, s_.camera, gl_scene_.aspect(), lv_, true, true);
       pass("shadow volume",
            "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT, ref_face)");
       ++counts_.shadowPasses;
       std::vector<const VolumeGeometry*> vols;
       for (const VolumeGeometry& v : rl.shadows) vols.push_back(&v);
-      counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, aspect(), lv_, false);
+      counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, gl_scene_.aspect(), lv_, false);
       pass("light", "lit by the virtual light | draw_normal_objects(Camera, SHAD_ZERO)");
       draw_normal_objects(cam, lv_.shadZero, &rl.virtualLight);
       pass("apply_stencil", "reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
@@ -149,7 +147,7 @@ class WindowRenderer {
     path_.push_back("draw_all_shadows");
     pass("shadow volume", "shadow volumes | make_all_shadows(ALWAYS)");
     ++counts_.shadowPasses;
-    setupView(cam);
+    gl_scene_.setupView(cam);
     counts_.zfailVolumes += shadows_.drawVolumes(gl_, light, cam, s_.camera, lv_);
     // More nested volumes than SHAD_ZERO..max can count saturate at max (INCR
     // clamps); find such pixels with a stencil-only pass the fragment counter
@@ -205,7 +203,7 @@ class WindowRenderer {
       }
       ViewCamera next = refCamera(cam, face, f, refLevel);
       if (face.refracts()) {
-        const auto r = refractedView(cam, s_.camera, face, f, face.ior, aspect());
+        const auto r = refractedView(cam, s_.camera, face, f, face.ior, gl_scene_.aspect());
         if (!r) {
           // The face's image cannot be mapped (a corner behind a camera):
           // nothing sensible to show through it; its mask is released below.
@@ -260,7 +258,7 @@ class WindowRenderer {
   // light alone, added where depth is EQUAL (1997 §7.2).
   void draw_normal_objects(const ViewCamera& cam, std::uint32_t stenValue, const PointLight* light) {
     if (usesStencil()) stencil(gl_, {PaperCompare::Equal, stenValue, PaperPass::Keep, stenValue}, lv_);
-    setupView(cam);
+    gl_scene_.setupView(cam);
     gl_.enable(GL_DEPTH_TEST);
     gl_.enable(GL_CULL_FACE);
     gl_.enable(GL_LIGHTING);
@@ -277,7 +275,7 @@ class WindowRenderer {
       gl_.blendFunc(GL_ONE, GL_ONE);
       gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
       gl_.enable(GL_LIGHT0);
-      setLight(0, *light);
+      gl_scene_.setLight(0, *light);
     }
     if (cam.fog) {
       // The ambient pass fades to the material's colour, the light passes to
@@ -292,136 +290,17 @@ class WindowRenderer {
     for (const SceneObject& o : s_.objects) {
       const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
       if (isRefMaterial(m, s_.render)) continue;  // "for (each non_ref object)"
-      setMaterial(m, !light);
-      drawTriangles(o.mesh);
+      gl_scene_.setMaterial(m, !light);
+      gl_scene_.drawTriangles(o.mesh);
     }
     if (cam.fog) gl_.disable(GL_FOG);
     if (light) ++counts_.lightPasses;
   }
 
-  // The view of `cam`: projection, modelview = lookAt * world, winding, clip plane.
-  void setupView(const ViewCamera& cam) {
-    const Camera& c = s_.camera;
-    const RefractionMap placement = s_.render.refractionMap;
-    // The end-of-pipeline placement: the emulated 3x3 stage after the
-    // perspective divide (depth kept exactly); off in every other view.
-    std::optional<glm::mat3> windowMap;
-    if (cam.mapped && placement == RefractionMap::EndOfPipeline) windowMap = glm::mat3(cam.imageMap);
-    gl_.windowMap(windowMap);
-    gl_.matrixMode(GL_PROJECTION);
-    gl_.loadIdentity();
-    if (cam.mapped && placement != RefractionMap::EndOfPipeline) {
-      // M3 as the user 4x4 of (A5), applied after the projection (it maps
-      // normalised device coordinates, x and y over w). The paper zeroes Z
-      // (projection_zeroed_z): every point then has the same depth, which
-      // "precludes the use of the Z-buffer", and the projection becomes
-      // singular, so the user clip plane at the face, which GL carries into
-      // clip space through the inverse projection (as Mesa does), cannot be
-      // used. MPR's default keeps Z: it is divided by the map's w, a positive
-      // factor constant along each view ray, so the depth order and the
-      // depth-equal light passes still hold.
-      Mat4 m = quadToQuadMatrix4(cam.imageMap);
-      if (placement == RefractionMap::ProjectionKeptZ) m[2][2] = 1.0f;
-      gl_.multMatrixf(&m[0][0]);  // column by column, as GL reads it
-    }
-    gl_.perspective(static_cast<double>(c.fovY), aspect(), static_cast<double>(c.near), static_cast<double>(c.far));
-    gl_.matrixMode(GL_MODELVIEW);
-    gl_.loadIdentity();
-    gl_.lookAt(static_cast<double>(c.position.x), static_cast<double>(c.position.y), static_cast<double>(c.position.z), static_cast<double>(c.lookAt.x), static_cast<double>(c.lookAt.y), static_cast<double>(c.lookAt.z), static_cast<double>(c.up.x), static_cast<double>(c.up.y), static_cast<double>(c.up.z));
-    if (cam.world != DMat4(1.0)) {
-      const DMat4& w = cam.world;
-      gl_.multMatrixd(&w[0][0]);
-    }
-    gl_.frontFace(cam.mirrored ? GL_CW : GL_CCW);
-    if (cam.clip && !(cam.mapped && placement == RefractionMap::ProjectionZeroedZ)) {
-      // The plane is given in the coordinates geometry is drawn in (the real
-      // scene's), so GL transforms it into the virtual view with the modelview.
-      gl_.clipPlane(GL_CLIP_PLANE0, &cam.clipPlane[0]);
-      gl_.enable(GL_CLIP_PLANE0);
-    } else if (usesStencil()) {
-      gl_.disable(GL_CLIP_PLANE0);
-    }
-  }
-
-  void setLight(int index, const PointLight& l) {
-    const GLenum n = lightName(index);
-    gl_.lightfv(n, GL_POSITION, glFloats(l.position.x, l.position.y, l.position.z, 1.0f).data());
-    gl_.lightfv(n, GL_DIFFUSE, glFloats(l.color.x, l.color.y, l.color.z, 1.0f).data());
-    gl_.lightfv(n, GL_SPECULAR, glFloats(l.color.x, l.color.y, l.color.z, 1.0f).data());
-    gl_.lightf(n, GL_CONSTANT_ATTENUATION, l.attenuation.x);
-    gl_.lightf(n, GL_LINEAR_ATTENUATION, l.attenuation.y);
-    gl_.lightf(n, GL_QUADRATIC_ATTENUATION, l.attenuation.z);
-  }
-
-  static GLenum lightName(int i) { return GL_LIGHT0 + static_cast<GLenum>(i); }
-
-  double aspect() const { return static_cast<double>(s_.render.width) / static_cast<double>(s_.render.height); }
-
-  // Ambient and up to eight lights in one pass (GL's own sum).
-  void enableAllLights() {
-    gl_.enable(GL_LIGHTING);
-    gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f).data());
-    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
-    for (int i = 0; i < lights; ++i) {
-      gl_.enable(lightName(i));
-      setLight(i, s_.lights[static_cast<std::size_t>(i)]);
-    }
-  }
-  void disableExtraLights() {
-    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
-    for (int i = 1; i < lights; ++i) gl_.disable(lightName(i));
-  }
-  void setFullMaterial(const SceneMaterial& m) {
-    const Vec3 d = m.diffuse;
-    gl_.materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, glFloats(d.x, d.y, d.z, 1.0f).data());
-    gl_.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, glFloats(d.x, d.y, d.z, 1.0f).data());
-    gl_.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, glFloats(m.specular.x, m.specular.y, m.specular.z, 1.0f).data());
-    gl_.materialfv(GL_FRONT_AND_BACK, GL_EMISSION, glFloats(m.emission.x, m.emission.y, m.emission.z, 1.0f).data());
-    gl_.materialf(GL_FRONT_AND_BACK, GL_SHININESS, m.shininess);
-  }
-
-  void setMaterial(const SceneMaterial& m, bool ambientPass) {
-    const Vec3 d = m.diffuse;
-    // The ambient pass carries ambient and emission; light passes diffuse and specular.
-    if (ambientPass) {
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, glFloats(d.x, d.y, d.z, 1.0f).data());
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_EMISSION, glFloats(m.emission.x, m.emission.y, m.emission.z, 1.0f).data());
-    } else {
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, glFloats(d.x, d.y, d.z, 1.0f).data());
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, glFloats(m.specular.x, m.specular.y, m.specular.z, 1.0f).data());
-      gl_.materialfv(GL_FRONT_AND_BACK, GL_EMISSION, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
-      gl_.materialf(GL_FRONT_AND_BACK, GL_SHININESS, m.shininess);
-    }
-  }
-
-  void drawTriangles(const Mesh& mesh) {
-    gl_.begin(GL_TRIANGLES);
-    for (const auto& t : mesh.triangles)
-      for (std::uint32_t v : t) {
-        const Vec3 n = mesh.normals[v], p = mesh.positions[v];
-        gl_.normal3f(n.x, n.y, n.z);
-        gl_.vertex3f(p.x, p.y, p.z);
-      }
-    gl_.end();
-  }
-
-  void drawPolygon(const RefFace& face, bool withNormal) {
-    gl_.begin(GL_POLYGON);
-    for (const Vec3& p : face.polygon) {
-      if (withNormal)
-        gl_.normal3f(static_cast<float>(face.normal.x), static_cast<float>(face.normal.y), static_cast<float>(face.normal.z));
-      gl_.vertex3f(p.x, p.y, p.z);
-    }
-    gl_.end();
-  }
-
   // draw_face(ref_face): the face's visible pixels (depth test, no colour or
   // depth writes) take the stencil op set by the caller.
   void drawFaceMask(const ViewCamera& cam, const RefFace& face) {
-    setupView(cam);
+    gl_scene_.setupView(cam);
     gl_.colorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     gl_.depthMask(GL_FALSE);
     gl_.enable(GL_DEPTH_TEST);
@@ -429,7 +308,7 @@ class WindowRenderer {
     gl_.enable(GL_CULL_FACE);
     gl_.disable(GL_LIGHTING);
     gl_.disable(GL_BLEND);
-    drawPolygon(face, false);
+    gl_scene_.drawPolygon(face, false);
     gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl_.depthMask(GL_TRUE);
   }
@@ -468,7 +347,7 @@ class WindowRenderer {
   void finishFace(const ViewCamera& cam, const RefFace& face) {
     const SceneMaterial& m = s_.materials[static_cast<std::size_t>(s_.objects[static_cast<std::size_t>(face.object)].material)];
     stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
-    setupView(cam);
+    gl_scene_.setupView(cam);
     gl_.enable(GL_DEPTH_TEST);
     gl_.depthFunc(GL_ALWAYS);
     gl_.enable(GL_CULL_FACE);
@@ -478,15 +357,15 @@ class WindowRenderer {
     gl_.depthMask(GL_FALSE);
     const float through = m.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
     gl_.color4f(0.0f, 0.0f, 0.0f, 1.0f - through);
-    drawPolygon(face, false);
+    gl_scene_.drawPolygon(face, false);
     gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl_.depthMask(GL_TRUE);
     gl_.enable(GL_BLEND);
     gl_.blendFunc(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA);
-    enableAllLights();
-    setFullMaterial(m);
-    drawPolygon(face, true);
-    disableExtraLights();
+    gl_scene_.enableAllLights();
+    gl_scene_.setFullMaterial(m);
+    gl_scene_.drawPolygon(face, true);
+    gl_scene_.disableExtraLights();
     gl_.disable(GL_BLEND);
   }
 
@@ -500,6 +379,7 @@ class WindowRenderer {
   std::vector<ReflectedLight> refLights_;
   std::vector<std::string> path_;
   DrawWindowCounts counts_;
+  SceneGL gl_scene_;
 };
 
 }  // namespace
