@@ -8,7 +8,7 @@
 
 #include "pipeline/gl_dispatch.hpp"
 #include "pipeline/gl_script_runner.hpp"
-#include "pipeline/transforms.hpp"
+#include "util/transforms.hpp"
 
 namespace mpr {
 namespace {

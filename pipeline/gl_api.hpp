@@ -16,7 +16,7 @@
 #include <type_traits>
 
 #include "pipeline/gl_call.hpp"
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

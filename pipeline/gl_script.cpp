@@ -14,7 +14,7 @@
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl_enums.hpp"
-#include "pipeline/spelling.hpp"
+#include "util/spelling.hpp"
 
 namespace mpr {
 namespace {
