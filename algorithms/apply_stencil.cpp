@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "algorithms/pass_state.hpp"
+
 namespace mpr {
 
 GLStencilSetting translateStencil(const PaperStencil& s, const StencilLevels& l) {
@@ -28,10 +30,10 @@ std::string valueName(std::uint32_t v, const StencilLevels& l) {
   return std::to_string(v);
 }
 
-void setStencil(GLApi& gl, const GLStencilSetting& g) {
-  gl.stencilFunc(g.func, static_cast<GLint>(g.ref), g.valueMask);
-  gl.stencilMask(g.writeMask);
-  gl.stencilOp(GL_KEEP, GL_KEEP, g.zpass);
+PassState stencilOnly(const GLStencilSetting& g) {
+  PassState s;
+  s.stencil = StencilSetting{g.func, static_cast<GLint>(g.ref), g.valueMask, g.writeMask, {{GL_KEEP, GL_KEEP, g.zpass}}};
+  return s;
 }
 
 }  // namespace
@@ -42,7 +44,7 @@ std::string paperStencilText(const PaperStencil& s, const StencilLevels& l) {
 }
 
 void stencil(GLApi& gl, const PaperStencil& s, const StencilLevels& l) {
-  setStencil(gl, translateStencil(s, l));
+  applyPassState(gl, stencilOnly(translateStencil(s, l)));
 }
 
 void apply_stencil(GLApi& gl, const PaperStencil& s, const StencilLevels& l) {
@@ -51,14 +53,7 @@ void apply_stencil(GLApi& gl, const PaperStencil& s, const StencilLevels& l) {
 
 void apply_to_screen(GLApi& gl, const GLStencilSetting& g) {
   gl.windowMap(std::nullopt);  // the whole screen, not a refracted view's image
-  setStencil(gl, g);
-  gl.colorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  gl.depthMask(GL_FALSE);
-  gl.disable(GL_DEPTH_TEST);
-  gl.disable(GL_LIGHTING);
-  gl.disable(GL_FOG);
-  gl.disable(GL_CULL_FACE);
-  gl.disable(GL_CLIP_PLANE0);
+  applyPassState(gl, merged(passes::kScreenStencilOnly, stencilOnly(g)));
   gl.matrixMode(GL_PROJECTION);
   gl.pushMatrix();
   gl.loadIdentity();
@@ -70,8 +65,7 @@ void apply_to_screen(GLApi& gl, const GLStencilSetting& g) {
   gl.matrixMode(GL_PROJECTION);
   gl.popMatrix();
   gl.matrixMode(GL_MODELVIEW);
-  gl.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl.depthMask(GL_TRUE);
+  applyPassState(gl, passes::kWritesOn);
 }
 
 }  // namespace mpr

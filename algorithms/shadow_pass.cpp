@@ -1,5 +1,6 @@
 #include "algorithms/shadow_pass.hpp"
 
+#include "algorithms/pass_state.hpp"
 #include "algorithms/ref_face.hpp"
 #include "algorithms/shadow_geometry.hpp"
 
@@ -47,15 +48,8 @@ std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& 
                            bool alwaysZFail) {
   // Count only where the stencil holds a shadow value: the top bit
   // (SHAD_MIN) set, i.e. SHAD_MIN <= stored & SHAD_MIN.
-  gl.stencilFunc(GL_LEQUAL, static_cast<int>(lv.shadMin), static_cast<int>(lv.shadMin));
-  gl.stencilMask(static_cast<int>(lv.max));
-  gl.colorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  gl.depthMask(GL_FALSE);
-  gl.enable(GL_DEPTH_TEST);
-  gl.depthFunc(GL_LESS);
-  gl.disable(GL_LIGHTING);
-  gl.disable(GL_BLEND);
-  gl.enable(GL_CULL_FACE);
+  applyPassState(gl, withStencil(passes::kVolumeCount, {GL_LEQUAL, static_cast<GLint>(lv.shadMin), lv.shadMin,
+                                                         lv.max, std::nullopt}));
   // Volumes the near plane cuts are counted behind the surface (z-fail);
   // the eye and the near rectangle are taken into the real scene, where the
   // volumes are.
@@ -84,8 +78,7 @@ std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& 
   }
   gl.cullFace(GL_BACK);
   gl.stencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  gl.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  gl.depthMask(GL_TRUE);
+  applyPassState(gl, passes::kWritesOn);
   return zfail.size();
 }
 
