@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "pipeline/quad_to_quad.hpp"
+#include "algorithms/quad_to_quad.hpp"
 
 namespace mpr {
 

@@ -8,7 +8,7 @@
 
 #include "algorithms/refraction.hpp"
 #include "algorithms/scene_renderer.hpp"
-#include "pipeline/quad_to_quad.hpp"
+#include "algorithms/quad_to_quad.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace mpr {
