@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <charconv>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -49,6 +50,20 @@ TEST(NumberText, EveryFloatClassRoundTrips) {
 TEST(NumberText, EverySubnormalFloatRoundTrips) {
   for (std::uint32_t mant = 0; mant <= 0x7FFFFF; ++mant)
     ASSERT_TRUE(floatRoundTrips(std::bit_cast<float>(mant))) << mant;
+}
+
+// The only finite floats whose shortest text rounds twice through a double
+// (found by checking all 2^32 patterns): written with more digits.
+TEST(NumberText, TheDoubleRoundingCasesRoundTrip) {
+  for (float v : {7.038531e-26f, -7.038531e-26f}) {
+    const std::string shortestFloat = [&] {
+      char buf[64];
+      return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+    }();
+    EXPECT_EQ(shortestFloat, v > 0 ? "7.038531e-26" : "-7.038531e-26");
+    EXPECT_NE(static_cast<float>(std::strtod(shortestFloat.c_str(), nullptr)), v);  // why the case exists
+    EXPECT_TRUE(floatRoundTrips(v)) << shortestText(v);
+  }
 }
 
 TEST(NumberText, FloatExtremesAndPowersOfTen) {
