@@ -2,19 +2,21 @@
 
 #include <stdexcept>
 
+#include "algorithms/pass_state.hpp"
+
 namespace mpr {
 
 GLStencilSetting translateStencil(const PaperStencil& s, const StencilLevels& l) {
   if (s.compare == PaperCompare::Equal) {
-    if (s.pass == PaperPass::Keep) return {"GL_EQUAL", s.compareValue, l.max, l.max, "GL_KEEP"};
+    if (s.pass == PaperPass::Keep) return {GL_EQUAL, s.compareValue, l.max, l.max, GL_KEEP};
     // INVERT through the mask A ^ B turns A into B and touches nothing else:
     // only pixels holding A pass the test.
-    return {"GL_EQUAL", s.compareValue, l.max, s.compareValue ^ s.passValue, "GL_INVERT"};
+    return {GL_EQUAL, s.compareValue, l.max, s.compareValue ^ s.passValue, GL_INVERT};
   }
   if (s.compare == PaperCompare::Greater && s.compareValue == l.shadMin && s.pass == PaperPass::Replace) {
-    if (s.passValue == l.zero) return {"GL_LESS", l.shadMin, l.max, l.max, "GL_ZERO"};
+    if (s.passValue == l.zero) return {GL_LESS, l.shadMin, l.max, l.max, GL_ZERO};
     if (s.passValue == l.shadZero)
-      return {"GL_LEQUAL", l.shadZero, l.shadMin, l.max, "GL_REPLACE"};
+      return {GL_LEQUAL, l.shadZero, l.shadMin, l.max, GL_REPLACE};
   }
   throw std::logic_error("stencil notation not used by Figure 4: " + paperStencilText(s, l));
 }
@@ -28,10 +30,10 @@ std::string valueName(std::uint32_t v, const StencilLevels& l) {
   return std::to_string(v);
 }
 
-void setStencil(GLCommandStream& gl, const GLStencilSetting& g) {
-  gl.call(GLCall::StencilFunc, {g.func, static_cast<int>(g.ref), static_cast<int>(g.valueMask)});
-  gl.call(GLCall::StencilMask, {static_cast<int>(g.writeMask)});
-  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", g.zpass});
+PassState stencilOnly(const GLStencilSetting& g) {
+  PassState s;
+  s.stencil = StencilSetting{g.func, static_cast<GLint>(g.ref), g.valueMask, g.writeMask, {{GL_KEEP, GL_KEEP, g.zpass}}};
+  return s;
 }
 
 }  // namespace
@@ -41,37 +43,29 @@ std::string paperStencilText(const PaperStencil& s, const StencilLevels& l) {
          (s.pass == PaperPass::Keep ? ", KEEP, " : ", REPLACE, ") + valueName(s.passValue, l);
 }
 
-void stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l) {
-  setStencil(gl, translateStencil(s, l));
+void stencil(GLApi& gl, const PaperStencil& s, const StencilLevels& l) {
+  applyPassState(gl, stencilOnly(translateStencil(s, l)));
 }
 
-void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& l) {
+void apply_stencil(GLApi& gl, const PaperStencil& s, const StencilLevels& l) {
   apply_to_screen(gl, translateStencil(s, l));
 }
 
-void apply_to_screen(GLCommandStream& gl, const GLStencilSetting& g) {
+void apply_to_screen(GLApi& gl, const GLStencilSetting& g) {
   gl.windowMap(std::nullopt);  // the whole screen, not a refracted view's image
-  setStencil(gl, g);
-  gl.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
-  gl.call(GLCall::DepthMask, {"GL_FALSE"});
-  gl.call(GLCall::Disable, {"GL_DEPTH_TEST"});
-  gl.call(GLCall::Disable, {"GL_LIGHTING"});
-  gl.call(GLCall::Disable, {"GL_FOG"});
-  gl.call(GLCall::Disable, {"GL_CULL_FACE"});
-  gl.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
-  gl.call(GLCall::MatrixMode, {"GL_PROJECTION"});
-  gl.call(GLCall::PushMatrix, {});
-  gl.call(GLCall::LoadIdentity, {});
-  gl.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
-  gl.call(GLCall::PushMatrix, {});
-  gl.call(GLCall::LoadIdentity, {});
-  gl.call(GLCall::Rectf, {-1.0f, -1.0f, 1.0f, 1.0f});
-  gl.call(GLCall::PopMatrix, {});
-  gl.call(GLCall::MatrixMode, {"GL_PROJECTION"});
-  gl.call(GLCall::PopMatrix, {});
-  gl.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
-  gl.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
-  gl.call(GLCall::DepthMask, {"GL_TRUE"});
+  applyPassState(gl, merged(passes::kScreenStencilOnly, stencilOnly(g)));
+  gl.matrixMode(GL_PROJECTION);
+  gl.pushMatrix();
+  gl.loadIdentity();
+  gl.matrixMode(GL_MODELVIEW);
+  gl.pushMatrix();
+  gl.loadIdentity();
+  gl.rectf(-1.0f, -1.0f, 1.0f, 1.0f);
+  gl.popMatrix();
+  gl.matrixMode(GL_PROJECTION);
+  gl.popMatrix();
+  gl.matrixMode(GL_MODELVIEW);
+  applyPassState(gl, passes::kWritesOn);
 }
 
 }  // namespace mpr

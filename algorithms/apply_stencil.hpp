@@ -30,7 +30,7 @@
 #include <cstdint>
 #include <string>
 
-#include "algorithms/gl_command_stream.hpp"
+#include "pipeline/gl_api.hpp"
 #include "algorithms/stencil_levels.hpp"
 
 namespace mpr {
@@ -45,11 +45,11 @@ struct PaperStencil {
   std::uint32_t passValue;
 };
 
-// The GL state one PaperStencil becomes (GL enum names, as the trace shows them).
+// The GL state one PaperStencil becomes.
 struct GLStencilSetting {
-  const char* func;
+  GLenum func;
   std::uint32_t ref, valueMask, writeMask;
-  const char* zpass;  // sfail and zfail are GL_KEEP
+  GLenum zpass;  // sfail and zfail are GL_KEEP
 };
 
 // Throws std::logic_error for a combination Figure 4 never uses.
@@ -59,16 +59,16 @@ GLStencilSetting translateStencil(const PaperStencil& s, const StencilLevels& le
 std::string paperStencilText(const PaperStencil& s, const StencilLevels& levels);
 
 // stencil(...): sets the stencil state for the draws that follow.
-void stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& levels);
+void stencil(GLApi& gl, const PaperStencil& s, const StencilLevels& levels);
 
 // apply_stencil(...): stencil(...) applied to every pixel, as a full-screen
 // quad under identity matrices with colour and depth writes off, and the
 // depth test, lighting, fog, culling and clip plane 0 off (DESIGN.md). It does
 // not restore them: every step of draw_window sets the state it draws with.
-void apply_stencil(GLCommandStream& gl, const PaperStencil& s, const StencilLevels& levels);
+void apply_stencil(GLApi& gl, const PaperStencil& s, const StencilLevels& levels);
 
 // apply_to_screen() of Figure 4 with a GL stencil setting of the caller's
 // (face_light_stencil raises every shadow value by one this way).
-void apply_to_screen(GLCommandStream& gl, const GLStencilSetting& g);
+void apply_to_screen(GLApi& gl, const GLStencilSetting& g);
 
 }  // namespace mpr

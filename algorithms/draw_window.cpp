@@ -22,21 +22,19 @@
 #include "algorithms/ref_face.hpp"
 #include "algorithms/ref_light.hpp"
 #include "algorithms/refraction.hpp"
+#include "algorithms/scene_gl.hpp"
 #include "algorithms/shadow_pass.hpp"
 #include "algorithms/view_camera.hpp"
-#include "pipeline/quad_to_quad.hpp"
 
 namespace mpr {
 namespace {
-
-constexpr int kMaxGLLights = 8;
 
 class WindowRenderer {
  public:
   WindowRenderer(const Scene& s, const RenderPlan& p, GLCommandStream& gl,
                  const std::function<void(const DrawWindowProgress&)>& progress)
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
-        shadows_(s, p) {
+        shadows_(s, p), gl_scene_(s, gl, p.shadows || p.reflections) {
     if (p.shadows) refLights_ = reflectedLights(s, faces_);
     counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
   }
@@ -44,23 +42,23 @@ class WindowRenderer {
   DrawWindowCounts run() {
     path_ = {};
     pass("clear", "clear | clear every buffer");
-    gl_.call(GLCall::Disable, {"GL_DITHER"});
-    gl_.call(GLCall::ClearColor, {0.0f, 0.0f, 0.0f, 1.0f});
-    gl_.call(GLCall::ClearDepth, {1.0});
-    gl_.call(GLCall::ClearStencil, {0});
-    gl_.call(GLCall::Clear, {"GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT|GL_STENCIL_BUFFER_BIT"});
-    gl_.call(GLCall::Viewport, {0, 0, s_.render.width, s_.render.height});
-    if (usesStencil()) gl_.call(GLCall::Enable, {"GL_STENCIL_TEST"});
+    gl_.disable(GL_DITHER);
+    gl_.clearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    gl_.clearDepth(1.0);
+    gl_.clearStencil(0);
+    gl_.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    gl_.viewport(0, 0, s_.render.width, s_.render.height);
+    if (usesStencil()) gl_.enable(GL_STENCIL_TEST);
     draw_window(ViewCamera{});
-    gl_.call(GLCall::Disable, {"GL_BLEND"});
-    if (usesStencil()) gl_.call(GLCall::Disable, {"GL_STENCIL_TEST"});
+    gl_.disable(GL_BLEND);
+    if (usesStencil()) gl_.disable(GL_STENCIL_TEST);
     if (plan_.reflections) {
-      gl_.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
-      gl_.call(GLCall::FrontFace, {"GL_CCW"});
+      gl_.disable(GL_CLIP_PLANE0);
+      gl_.frontFace(GL_CCW);
     }
-    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
-    gl_.call(GLCall::DepthFunc, {"GL_LESS"});
-    gl_.finish();
+    gl_.depthMask(GL_TRUE);
+    gl_.depthFunc(GL_LESS);
+    gl_.endPasses();
     counts_.warnings.insert(counts_.warnings.begin(), shadows_.warnings().begin(), shadows_.warnings().end());
     return counts_;
   }
@@ -126,15 +124,15 @@ class WindowRenderer {
       path_.push_back("draw_ref_shadows > face " + std::to_string(rl.face) + " \"" +
                       s_.objects[static_cast<std::size_t>(face.object)].name + "\"");
       pass("light volume", "light volume | face_light_stencil(ref_face)");
-      apply_to_screen(gl_, {"GL_LEQUAL", lv_.shadMin, lv_.shadMin, lv_.max, "GL_INCR"});
-      setupView(cam);
-      countVolumes(gl_, {&rl.lightVolume}, cam, s_.camera, aspect(), lv_, true, true);
+      apply_to_screen(gl_, {GL_LEQUAL, lv_.shadMin, lv_.shadMin, lv_.max, GL_INCR});
+      gl_scene_.setupView(cam);
+      countVolumes(gl_, {&rl.lightVolume}, cam, s_.camera, gl_scene_.aspect(), lv_, true, true);
       pass("shadow volume",
            "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT, ref_face)");
       ++counts_.shadowPasses;
       std::vector<const VolumeGeometry*> vols;
       for (const VolumeGeometry& v : rl.shadows) vols.push_back(&v);
-      counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, aspect(), lv_, false);
+      counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, gl_scene_.aspect(), lv_, false);
       pass("light", "lit by the virtual light | draw_normal_objects(Camera, SHAD_ZERO)");
       draw_normal_objects(cam, lv_.shadZero, &rl.virtualLight);
       pass("apply_stencil", "reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
@@ -149,15 +147,15 @@ class WindowRenderer {
     path_.push_back("draw_all_shadows");
     pass("shadow volume", "shadow volumes | make_all_shadows(ALWAYS)");
     ++counts_.shadowPasses;
-    setupView(cam);
+    gl_scene_.setupView(cam);
     counts_.zfailVolumes += shadows_.drawVolumes(gl_, light, cam, s_.camera, lv_);
     // More nested volumes than SHAD_ZERO..max can count saturate at max (INCR
     // clamps); find such pixels with a stencil-only pass the fragment counter
     // measures (an occlusion query's part) and report them.
     pass("shadow check", "count check | apply_stencil(EQUAL, max, KEEP, max)  // saturated counts?");
-    const std::uint64_t before = gl_.context().counters().fragmentsWritten;
+    gl_.beginFragmentCount();
     apply_stencil(gl_, {PaperCompare::Equal, lv_.max, PaperPass::Keep, lv_.max}, lv_);
-    const std::uint64_t saturated = gl_.context().counters().fragmentsWritten - before;
+    const std::uint64_t saturated = gl_.endFragmentCount();
     if (saturated > 0)
       counts_.warnings.push_back(std::to_string(saturated) + " pixels of view " + std::to_string(counts_.views) +
                                  ", light " + std::to_string(light) + " are inside " +
@@ -177,7 +175,7 @@ class WindowRenderer {
     path_.push_back("draw_ref_objects level " + std::to_string(refLevel));
     if (refLevel == 1) {
       pass("apply_stencil", "clear | clear_stencil(ZERO)");
-      gl_.call(GLCall::Clear, {"GL_STENCIL_BUFFER_BIT"});
+      gl_.clear(GL_STENCIL_BUFFER_BIT);
     }
     pass("apply_stencil", "render area to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)");
     apply_stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Replace, level}, lv_);
@@ -194,18 +192,18 @@ class WindowRenderer {
       path_.push_back("face " + std::to_string(f) + " \"" + obj.name + "\"");
       pass("ref face", "mask the face | stencil(EQUAL, REF_LEVEL, REPLACE, ZERO); draw_face(ref_face)");
       stencil(gl_, {PaperCompare::Equal, level, PaperPass::Replace, lv_.zero}, lv_);
-      const std::uint64_t written = gl_.context().counters().fragmentsWritten;
-      drawFaceMask(cam, face);
-      // No pixel of the face survived the depth and stencil tests: nothing
+      // No pixel of the face survives the depth and stencil tests: nothing
       // to reflect (culling on; the counter plays an occlusion query's part).
-      if (plan_.cull && gl_.context().counters().fragmentsWritten == written) {
+      if (plan_.cull) gl_.beginFragmentCount();
+      drawFaceMask(cam, face);
+      if (plan_.cull && gl_.endFragmentCount() == 0) {
         ++counts_.facesSkipped;
         path_.pop_back();
         continue;
       }
       ViewCamera next = refCamera(cam, face, f, refLevel);
       if (face.refracts()) {
-        const auto r = refractedView(cam, s_.camera, face, f, face.ior, aspect());
+        const auto r = refractedView(cam, s_.camera, face, f, face.ior, gl_scene_.aspect());
         if (!r) {
           // The face's image cannot be mapped (a corner behind a camera):
           // nothing sensible to show through it; its mask is released below.
@@ -260,193 +258,59 @@ class WindowRenderer {
   // light alone, added where depth is EQUAL (1997 §7.2).
   void draw_normal_objects(const ViewCamera& cam, std::uint32_t stenValue, const PointLight* light) {
     if (usesStencil()) stencil(gl_, {PaperCompare::Equal, stenValue, PaperPass::Keep, stenValue}, lv_);
-    setupView(cam);
-    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
-    gl_.call(GLCall::Enable, {"GL_CULL_FACE"});
-    gl_.call(GLCall::Enable, {"GL_LIGHTING"});
+    gl_scene_.setupView(cam);
+    gl_.enable(GL_DEPTH_TEST);
+    gl_.enable(GL_CULL_FACE);
+    gl_.enable(GL_LIGHTING);
     if (!light) {
-      gl_.call(GLCall::DepthFunc, {"GL_LEQUAL"});
-      gl_.call(GLCall::DepthMask, {"GL_TRUE"});
-      gl_.call(GLCall::Disable, {"GL_BLEND"});
-      gl_.call(GLCall::Disable, {"GL_LIGHT0"});
-      gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f});
+      gl_.depthFunc(GL_LEQUAL);
+      gl_.depthMask(GL_TRUE);
+      gl_.disable(GL_BLEND);
+      gl_.disable(GL_LIGHT0);
+      gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f).data());
     } else {
-      gl_.call(GLCall::DepthFunc, {"GL_EQUAL"});
-      gl_.call(GLCall::DepthMask, {"GL_FALSE"});
-      gl_.call(GLCall::Enable, {"GL_BLEND"});
-      gl_.call(GLCall::BlendFunc, {"GL_ONE", "GL_ONE"});
-      gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", 0.0f, 0.0f, 0.0f, 1.0f});
-      gl_.call(GLCall::Enable, {"GL_LIGHT0"});
-      setLight(0, *light);
+      gl_.depthFunc(GL_EQUAL);
+      gl_.depthMask(GL_FALSE);
+      gl_.enable(GL_BLEND);
+      gl_.blendFunc(GL_ONE, GL_ONE);
+      gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
+      gl_.enable(GL_LIGHT0);
+      gl_scene_.setLight(0, *light);
     }
     if (cam.fog) {
       // The ambient pass fades to the material's colour, the light passes to
       // black: their sum is f * lit + (1 - f) * colour, fog of the whole.
       const Vec3 c = !light ? cam.fogColor : Vec3(0.0f);
-      gl_.call(GLCall::Enable, {"GL_FOG"});
-      gl_.call(GLCall::Fogi, {"GL_FOG_MODE", "GL_LINEAR"});
-      gl_.call(GLCall::Fogf, {"GL_FOG_START", cam.fogStart});
-      gl_.call(GLCall::Fogf, {"GL_FOG_END", cam.fogEnd});
-      gl_.call(GLCall::Fogfv, {"GL_FOG_COLOR", c.x, c.y, c.z, 1.0f});
+      gl_.enable(GL_FOG);
+      gl_.fogi(GL_FOG_MODE, GL_LINEAR);
+      gl_.fogf(GL_FOG_START, cam.fogStart);
+      gl_.fogf(GL_FOG_END, cam.fogEnd);
+      gl_.fogfv(GL_FOG_COLOR, glFloats(c.x, c.y, c.z, 1.0f).data());
     }
     for (const SceneObject& o : s_.objects) {
       const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
       if (isRefMaterial(m, s_.render)) continue;  // "for (each non_ref object)"
-      setMaterial(m, !light);
-      drawTriangles(o.mesh);
+      gl_scene_.setMaterial(m, !light);
+      gl_scene_.drawTriangles(o.mesh);
     }
-    if (cam.fog) gl_.call(GLCall::Disable, {"GL_FOG"});
+    if (cam.fog) gl_.disable(GL_FOG);
     if (light) ++counts_.lightPasses;
-  }
-
-  // The view of `cam`: projection, modelview = lookAt * world, winding, clip plane.
-  void setupView(const ViewCamera& cam) {
-    const Camera& c = s_.camera;
-    const RefractionMap placement = s_.render.refractionMap;
-    // The end-of-pipeline placement: the emulated 3x3 stage after the
-    // perspective divide (depth kept exactly); off in every other view.
-    std::optional<glm::mat3> windowMap;
-    if (cam.mapped && placement == RefractionMap::EndOfPipeline) windowMap = glm::mat3(cam.imageMap);
-    gl_.windowMap(windowMap);
-    gl_.call(GLCall::MatrixMode, {"GL_PROJECTION"});
-    gl_.call(GLCall::LoadIdentity, {});
-    if (cam.mapped && placement != RefractionMap::EndOfPipeline) {
-      // M3 as the user 4x4 of (A5), applied after the projection (it maps
-      // normalised device coordinates, x and y over w). The paper zeroes Z
-      // (projection_zeroed_z): every point then has the same depth, which
-      // "precludes the use of the Z-buffer", and the projection becomes
-      // singular, so the user clip plane at the face, which GL carries into
-      // clip space through the inverse projection (as Mesa does), cannot be
-      // used. MPR's default keeps Z: it is divided by the map's w, a positive
-      // factor constant along each view ray, so the depth order and the
-      // depth-equal light passes still hold.
-      Mat4 m = quadToQuadMatrix4(cam.imageMap);
-      if (placement == RefractionMap::ProjectionKeptZ) m[2][2] = 1.0f;
-      gl_.call(GLCall::MultMatrixf, {m[0][0], m[0][1], m[0][2], m[0][3], m[1][0], m[1][1], m[1][2], m[1][3],
-                                     m[2][0], m[2][1], m[2][2], m[2][3], m[3][0], m[3][1], m[3][2], m[3][3]});
-    }
-    gl_.call(GLCall::Perspective, {static_cast<double>(c.fovY), aspect(), static_cast<double>(c.near),
-                                   static_cast<double>(c.far)});
-    gl_.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
-    gl_.call(GLCall::LoadIdentity, {});
-    gl_.call(GLCall::LookAt, {static_cast<double>(c.position.x), static_cast<double>(c.position.y),
-                              static_cast<double>(c.position.z), static_cast<double>(c.lookAt.x),
-                              static_cast<double>(c.lookAt.y), static_cast<double>(c.lookAt.z),
-                              static_cast<double>(c.up.x), static_cast<double>(c.up.y),
-                              static_cast<double>(c.up.z)});
-    if (cam.world != DMat4(1.0)) {
-      const DMat4& w = cam.world;
-      gl_.call(GLCall::MultMatrixd, {w[0][0], w[0][1], w[0][2], w[0][3], w[1][0], w[1][1], w[1][2], w[1][3],
-                                     w[2][0], w[2][1], w[2][2], w[2][3], w[3][0], w[3][1], w[3][2], w[3][3]});
-    }
-    gl_.call(GLCall::FrontFace, {cam.mirrored ? "GL_CW" : "GL_CCW"});
-    if (cam.clip && !(cam.mapped && placement == RefractionMap::ProjectionZeroedZ)) {
-      // The plane is given in the coordinates geometry is drawn in (the real
-      // scene's), so GL transforms it into the virtual view with the modelview.
-      gl_.call(GLCall::ClipPlane, {"GL_CLIP_PLANE0", cam.clipPlane.x, cam.clipPlane.y, cam.clipPlane.z,
-                                   cam.clipPlane.w});
-      gl_.call(GLCall::Enable, {"GL_CLIP_PLANE0"});
-    } else if (usesStencil()) {
-      gl_.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
-    }
-  }
-
-  void setLight(int index, const PointLight& l) {
-    const std::string_view n = lightName(index);
-    gl_.call(GLCall::Lightfv, {n, "GL_POSITION", l.position.x, l.position.y, l.position.z, 1.0f});
-    gl_.call(GLCall::Lightfv, {n, "GL_DIFFUSE", l.color.x, l.color.y, l.color.z, 1.0f});
-    gl_.call(GLCall::Lightfv, {n, "GL_SPECULAR", l.color.x, l.color.y, l.color.z, 1.0f});
-    gl_.call(GLCall::Lightf, {n, "GL_CONSTANT_ATTENUATION", l.attenuation.x});
-    gl_.call(GLCall::Lightf, {n, "GL_LINEAR_ATTENUATION", l.attenuation.y});
-    gl_.call(GLCall::Lightf, {n, "GL_QUADRATIC_ATTENUATION", l.attenuation.z});
-  }
-
-  static std::string_view lightName(int i) {
-    static constexpr std::string_view names[kMaxGLLights] = {"GL_LIGHT0", "GL_LIGHT1", "GL_LIGHT2", "GL_LIGHT3",
-                                                             "GL_LIGHT4", "GL_LIGHT5", "GL_LIGHT6", "GL_LIGHT7"};
-    return names[i];
-  }
-
-  double aspect() const { return static_cast<double>(s_.render.width) / static_cast<double>(s_.render.height); }
-
-  // Ambient and up to eight lights in one pass (GL's own sum).
-  void enableAllLights() {
-    gl_.call(GLCall::Enable, {"GL_LIGHTING"});
-    gl_.call(GLCall::LightModelfv, {"GL_LIGHT_MODEL_AMBIENT", s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f});
-    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
-    for (int i = 0; i < lights; ++i) {
-      gl_.call(GLCall::Enable, {lightName(i)});
-      setLight(i, s_.lights[static_cast<std::size_t>(i)]);
-    }
-  }
-  void disableExtraLights() {
-    const int lights = std::min(kMaxGLLights, static_cast<int>(s_.lights.size()));
-    for (int i = 1; i < lights; ++i) gl_.call(GLCall::Disable, {lightName(i)});
-  }
-  void setFullMaterial(const SceneMaterial& m) {
-    const Vec3 d = m.diffuse;
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", d.x, d.y, d.z, 1.0f});
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", d.x, d.y, d.z, 1.0f});
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_SPECULAR", m.specular.x, m.specular.y, m.specular.z, 1.0f});
-    gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_EMISSION", m.emission.x, m.emission.y, m.emission.z, 1.0f});
-    gl_.call(GLCall::Materialf, {"GL_FRONT_AND_BACK", "GL_SHININESS", m.shininess});
-  }
-
-  void setMaterial(const SceneMaterial& m, bool ambientPass) {
-    const Vec3 d = m.diffuse;
-    // The ambient pass carries ambient and emission; light passes diffuse and specular.
-    if (ambientPass) {
-      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", d.x, d.y, d.z, 1.0f});
-      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", 0.0f, 0.0f, 0.0f, 1.0f});
-      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_SPECULAR", 0.0f, 0.0f, 0.0f, 1.0f});
-      gl_.call(GLCall::Materialfv,
-               {"GL_FRONT_AND_BACK", "GL_EMISSION", m.emission.x, m.emission.y, m.emission.z, 1.0f});
-    } else {
-      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_AMBIENT", 0.0f, 0.0f, 0.0f, 1.0f});
-      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_DIFFUSE", d.x, d.y, d.z, 1.0f});
-      gl_.call(GLCall::Materialfv,
-               {"GL_FRONT_AND_BACK", "GL_SPECULAR", m.specular.x, m.specular.y, m.specular.z, 1.0f});
-      gl_.call(GLCall::Materialfv, {"GL_FRONT_AND_BACK", "GL_EMISSION", 0.0f, 0.0f, 0.0f, 1.0f});
-      gl_.call(GLCall::Materialf, {"GL_FRONT_AND_BACK", "GL_SHININESS", m.shininess});
-    }
-  }
-
-  void drawTriangles(const Mesh& mesh) {
-    gl_.call(GLCall::Begin, {"GL_TRIANGLES"});
-    for (const auto& t : mesh.triangles)
-      for (std::uint32_t v : t) {
-        const Vec3 n = mesh.normals[v], p = mesh.positions[v];
-        gl_.call(GLCall::Normal3f, {n.x, n.y, n.z});
-        gl_.call(GLCall::Vertex3f, {p.x, p.y, p.z});
-      }
-    gl_.call(GLCall::End, {});
-  }
-
-  void drawPolygon(const RefFace& face, bool withNormal) {
-    gl_.call(GLCall::Begin, {"GL_POLYGON"});
-    for (const Vec3& p : face.polygon) {
-      if (withNormal)
-        gl_.call(GLCall::Normal3f, {static_cast<float>(face.normal.x), static_cast<float>(face.normal.y),
-                                    static_cast<float>(face.normal.z)});
-      gl_.call(GLCall::Vertex3f, {p.x, p.y, p.z});
-    }
-    gl_.call(GLCall::End, {});
   }
 
   // draw_face(ref_face): the face's visible pixels (depth test, no colour or
   // depth writes) take the stencil op set by the caller.
   void drawFaceMask(const ViewCamera& cam, const RefFace& face) {
-    setupView(cam);
-    gl_.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
-    gl_.call(GLCall::DepthMask, {"GL_FALSE"});
-    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
-    gl_.call(GLCall::DepthFunc, {"GL_LEQUAL"});
-    gl_.call(GLCall::Enable, {"GL_CULL_FACE"});
-    gl_.call(GLCall::Disable, {"GL_LIGHTING"});
-    gl_.call(GLCall::Disable, {"GL_BLEND"});
-    drawPolygon(face, false);
-    gl_.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
-    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
+    gl_scene_.setupView(cam);
+    gl_.colorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl_.depthMask(GL_FALSE);
+    gl_.enable(GL_DEPTH_TEST);
+    gl_.depthFunc(GL_LEQUAL);
+    gl_.enable(GL_CULL_FACE);
+    gl_.disable(GL_LIGHTING);
+    gl_.disable(GL_BLEND);
+    gl_scene_.drawPolygon(face, false);
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl_.depthMask(GL_TRUE);
   }
 
   // Inside the face's mask (stencil ZERO): clear colour (black, or a
@@ -455,24 +319,24 @@ class WindowRenderer {
   void clearMaskToFar(Vec3 colour) {
     stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
     gl_.windowMap(std::nullopt);
-    gl_.call(GLCall::Disable, {"GL_LIGHTING"});
-    gl_.call(GLCall::Disable, {"GL_BLEND"});
-    gl_.call(GLCall::Disable, {"GL_CULL_FACE"});
-    gl_.call(GLCall::Disable, {"GL_CLIP_PLANE0"});
-    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
-    gl_.call(GLCall::DepthFunc, {"GL_ALWAYS"});
-    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
-    gl_.call(GLCall::MatrixMode, {"GL_PROJECTION"});
-    gl_.call(GLCall::LoadIdentity, {});
-    gl_.call(GLCall::MatrixMode, {"GL_MODELVIEW"});
-    gl_.call(GLCall::LoadIdentity, {});
-    gl_.call(GLCall::Color4f, {colour.x, colour.y, colour.z, 1.0f});
-    gl_.call(GLCall::Begin, {"GL_QUADS"});
-    gl_.call(GLCall::Vertex3f, {-1.0f, -1.0f, 1.0f});
-    gl_.call(GLCall::Vertex3f, {1.0f, -1.0f, 1.0f});
-    gl_.call(GLCall::Vertex3f, {1.0f, 1.0f, 1.0f});
-    gl_.call(GLCall::Vertex3f, {-1.0f, 1.0f, 1.0f});
-    gl_.call(GLCall::End, {});
+    gl_.disable(GL_LIGHTING);
+    gl_.disable(GL_BLEND);
+    gl_.disable(GL_CULL_FACE);
+    gl_.disable(GL_CLIP_PLANE0);
+    gl_.enable(GL_DEPTH_TEST);
+    gl_.depthFunc(GL_ALWAYS);
+    gl_.depthMask(GL_TRUE);
+    gl_.matrixMode(GL_PROJECTION);
+    gl_.loadIdentity();
+    gl_.matrixMode(GL_MODELVIEW);
+    gl_.loadIdentity();
+    gl_.color4f(colour.x, colour.y, colour.z, 1.0f);
+    gl_.begin(GL_QUADS);
+    gl_.vertex3f(-1.0f, -1.0f, 1.0f);
+    gl_.vertex3f(1.0f, -1.0f, 1.0f);
+    gl_.vertex3f(1.0f, 1.0f, 1.0f);
+    gl_.vertex3f(-1.0f, 1.0f, 1.0f);
+    gl_.end();
   }
 
   // After the reflection is drawn in the face's mask (still ZERO): first
@@ -483,26 +347,26 @@ class WindowRenderer {
   void finishFace(const ViewCamera& cam, const RefFace& face) {
     const SceneMaterial& m = s_.materials[static_cast<std::size_t>(s_.objects[static_cast<std::size_t>(face.object)].material)];
     stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
-    setupView(cam);
-    gl_.call(GLCall::Enable, {"GL_DEPTH_TEST"});
-    gl_.call(GLCall::DepthFunc, {"GL_ALWAYS"});
-    gl_.call(GLCall::Enable, {"GL_CULL_FACE"});
-    gl_.call(GLCall::Disable, {"GL_LIGHTING"});
-    gl_.call(GLCall::Disable, {"GL_BLEND"});
-    gl_.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_TRUE"});
-    gl_.call(GLCall::DepthMask, {"GL_FALSE"});
+    gl_scene_.setupView(cam);
+    gl_.enable(GL_DEPTH_TEST);
+    gl_.depthFunc(GL_ALWAYS);
+    gl_.enable(GL_CULL_FACE);
+    gl_.disable(GL_LIGHTING);
+    gl_.disable(GL_BLEND);
+    gl_.colorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    gl_.depthMask(GL_FALSE);
     const float through = m.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
-    gl_.call(GLCall::Color4f, {0.0f, 0.0f, 0.0f, 1.0f - through});
-    drawPolygon(face, false);
-    gl_.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
-    gl_.call(GLCall::DepthMask, {"GL_TRUE"});
-    gl_.call(GLCall::Enable, {"GL_BLEND"});
-    gl_.call(GLCall::BlendFunc, {"GL_DST_ALPHA", "GL_ONE_MINUS_DST_ALPHA"});
-    enableAllLights();
-    setFullMaterial(m);
-    drawPolygon(face, true);
-    disableExtraLights();
-    gl_.call(GLCall::Disable, {"GL_BLEND"});
+    gl_.color4f(0.0f, 0.0f, 0.0f, 1.0f - through);
+    gl_scene_.drawPolygon(face, false);
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl_.depthMask(GL_TRUE);
+    gl_.enable(GL_BLEND);
+    gl_.blendFunc(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA);
+    gl_scene_.enableAllLights();
+    gl_scene_.setFullMaterial(m);
+    gl_scene_.drawPolygon(face, true);
+    gl_scene_.disableExtraLights();
+    gl_.disable(GL_BLEND);
   }
 
   const Scene& s_;
@@ -515,6 +379,7 @@ class WindowRenderer {
   std::vector<ReflectedLight> refLights_;
   std::vector<std::string> path_;
   DrawWindowCounts counts_;
+  SceneGL gl_scene_;
 };
 
 }  // namespace

@@ -1,72 +1,74 @@
 #pragma once
 // The seam between the algorithms and the emulated hardware (DESIGN.md): every
-// GL call an algorithm makes goes through this stream, which executes it on
-// the GLContext and, on request, records it as a GL script line. Each number
-// is executed exactly as its recorded text parses, so `mpr gl` replays a trace
-// to the same bytes.
+// GL call an algorithm makes is a typed GLApi call on this stream, a tee that
+// executes it on the emulator and, when a trace is asked for, also writes it
+// as a GL script line (GLTraceWriter). The render never goes through text;
+// the trace's numbers are the shortest that read back to the same values, so
+// `mpr gl` replays a trace to the same bytes.
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
+#include "pipeline/gl_api.hpp"
 #include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
+#include "pipeline/gl_emulator.hpp"
+#include "pipeline/gl_trace_writer.hpp"
 
 namespace mpr {
-
-// One argument: a number (single or double precision, as the C call takes
-// it) or a GL enumerant name.
-struct GLArg {
-  enum class Kind : std::uint8_t { Float, Double, Int, Enum } kind;
-  double number = 0.0;
-  std::string_view name;
-  GLArg(float v) : kind(Kind::Float), number(v) {}
-  GLArg(double v) : kind(Kind::Double), number(v) {}
-  GLArg(int v) : kind(Kind::Int), number(v) {}
-  GLArg(std::string_view enumName) : kind(Kind::Enum), name(enumName) {}
-  GLArg(const char* enumName) : kind(Kind::Enum), name(enumName) {}
-};
 
 struct PassStatistics {
   std::uint64_t passes = 0, calls = 0, triangles = 0, fragmentsTested = 0, fragmentsWritten = 0;
   double seconds = 0.0;
 };
 
-class GLCommandStream {
+class GLCommandStream final : public GLApi {
  public:
   GLCommandStream(GLContext& gl, bool recordTrace);
 
-  void call(GLCall c, std::initializer_list<GLArg> args);
+#define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) \
+  void method params override {                                   \
+    emulator_.method args;                                        \
+    if (writer_) writer_->method args;                            \
+    afterCall();                                                  \
+  }
+#include "pipeline/gl_calls.def"
+
   // Starts a pass: `kind` groups statistics ("ambient", "light"), `label` is the @pass line.
   void pass(const std::string& kind, const std::string& label);
-  void finish();  // closes the last pass's timing
+  void pass(std::string_view label) override { pass("other", std::string(label)); }
+  void endPasses();  // closes the last pass's timing (glFinish is finish())
   // Called with a pass's label when it ends (the next pass starts, or finish):
   // tests and the stepper look at the buffers there.
   void onPassEnd(std::function<void(const std::string& label)> f) { passEnd_ = std::move(f); }
 
-  // The end-of-pipeline map (GLContext::setWindowMap; the 1994 paper's wished
-  // hardware stage, not a GL call). Recorded in the trace as a comment only,
-  // so a trace of a render that used it does not replay to the same bytes.
-  void windowMap(const std::optional<glm::mat3>& map);
-  bool usedWindowMap() const { return usedWindowMap_; }
+  // The end-of-pipeline map (@window_map); written only when it changes.
+  void windowMap(const std::optional<glm::mat3>& map) override;
+  // The fragment counter (@count_fragments): fragments written in between.
+  void beginFragmentCount() override;
+  std::uint64_t endFragmentCount() override;
 
-  const std::string& trace() const { return trace_; }
+  const std::string& trace() const;
   std::uint64_t glErrors() const { return glErrors_; }
   std::uint64_t calls() const { return calls_; }
+  // The pipeline's own counters over the whole render (for --stats).
+  const PipelineCounters& counters() const { return gl_.counters(); }
   const std::map<std::string, PassStatistics>& passStatistics() const { return stats_; }
-  GLContext& context() { return gl_; }
 
  private:
+  void afterCall() {
+    ++calls_;
+    if (!gl_.insideBeginEnd() && gl_.getError() != 0) ++glErrors_;
+  }
   void closePass();
   GLContext& gl_;
-  bool record_;
-  std::string trace_;
+  GLEmulator emulator_;
+  std::unique_ptr<GLTraceWriter> writer_;
   std::uint64_t calls_ = 0, glErrors_ = 0;
-  bool usedWindowMap_ = false;
   std::map<std::string, PassStatistics> stats_;
   std::string currentKind_, currentLabel_;
   std::function<void(const std::string&)> passEnd_;

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "pipeline/quad_to_quad.hpp"
+#include "algorithms/quad_to_quad.hpp"
 
 namespace mpr {
 namespace {

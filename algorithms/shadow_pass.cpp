@@ -1,5 +1,6 @@
 #include "algorithms/shadow_pass.hpp"
 
+#include "algorithms/pass_state.hpp"
 #include "algorithms/ref_face.hpp"
 #include "algorithms/shadow_geometry.hpp"
 
@@ -33,29 +34,22 @@ ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : scene_(scen
 
 namespace {
 
-void drawTriangles(GLCommandStream& gl, const std::vector<std::array<Vec3, 3>>& tris) {
-  gl.call(GLCall::Begin, {"GL_TRIANGLES"});
+void drawTriangles(GLApi& gl, const std::vector<std::array<Vec3, 3>>& tris) {
+  gl.begin(GL_TRIANGLES);
   for (const auto& t : tris)
-    for (const Vec3& p : t) gl.call(GLCall::Vertex3f, {p.x, p.y, p.z});
-  gl.call(GLCall::End, {});
+    for (const Vec3& p : t) gl.vertex3f(p.x, p.y, p.z);
+  gl.end();
 }
 
 }  // namespace
 
-std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGeometry*>& vols, const ViewCamera& view,
+std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& vols, const ViewCamera& view,
                            const Camera& camera, double aspect, const StencilLevels& lv, bool inverted,
                            bool alwaysZFail) {
   // Count only where the stencil holds a shadow value: the top bit
   // (SHAD_MIN) set, i.e. SHAD_MIN <= stored & SHAD_MIN.
-  gl.call(GLCall::StencilFunc, {"GL_LEQUAL", static_cast<int>(lv.shadMin), static_cast<int>(lv.shadMin)});
-  gl.call(GLCall::StencilMask, {static_cast<int>(lv.max)});
-  gl.call(GLCall::ColorMask, {"GL_FALSE", "GL_FALSE", "GL_FALSE", "GL_FALSE"});
-  gl.call(GLCall::DepthMask, {"GL_FALSE"});
-  gl.call(GLCall::Enable, {"GL_DEPTH_TEST"});
-  gl.call(GLCall::DepthFunc, {"GL_LESS"});
-  gl.call(GLCall::Disable, {"GL_LIGHTING"});
-  gl.call(GLCall::Disable, {"GL_BLEND"});
-  gl.call(GLCall::Enable, {"GL_CULL_FACE"});
+  applyPassState(gl, withStencil(passes::kVolumeCount, {GL_LEQUAL, static_cast<GLint>(lv.shadMin), lv.shadMin,
+                                                         lv.max, std::nullopt}));
   // Volumes the near plane cuts are counted behind the surface (z-fail);
   // the eye and the near rectangle are taken into the real scene, where the
   // volumes are.
@@ -64,32 +58,31 @@ std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGe
   std::vector<const VolumeGeometry*> zpass, zfail;
   for (const VolumeGeometry* v : vols)
     (alwaysZFail || v->alwaysZFail || volumeNeedsZFail(*v, Vec3(eye), near) ? zfail : zpass).push_back(v);
-  const char* up = inverted ? "GL_DECR" : "GL_INCR";
-  const char* down = inverted ? "GL_INCR" : "GL_DECR";
+  const GLenum up = inverted ? GL_DECR : GL_INCR;
+  const GLenum down = inverted ? GL_INCR : GL_DECR;
   if (!zpass.empty()) {
-    gl.call(GLCall::CullFace, {"GL_BACK"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", up});
+    gl.cullFace(GL_BACK);
+    gl.stencilOp(GL_KEEP, GL_KEEP, up);
     for (const VolumeGeometry* v : zpass) drawTriangles(gl, v->sides);
-    gl.call(GLCall::CullFace, {"GL_FRONT"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", down});
+    gl.cullFace(GL_FRONT);
+    gl.stencilOp(GL_KEEP, GL_KEEP, down);
     for (const VolumeGeometry* v : zpass) drawTriangles(gl, v->sides);
   }
   if (!zfail.empty()) {
-    gl.call(GLCall::CullFace, {"GL_FRONT"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", up, "GL_KEEP"});
+    gl.cullFace(GL_FRONT);
+    gl.stencilOp(GL_KEEP, up, GL_KEEP);
     for (const VolumeGeometry* v : zfail) drawTriangles(gl, v->sides), drawTriangles(gl, v->caps);
-    gl.call(GLCall::CullFace, {"GL_BACK"});
-    gl.call(GLCall::StencilOp, {"GL_KEEP", down, "GL_KEEP"});
+    gl.cullFace(GL_BACK);
+    gl.stencilOp(GL_KEEP, down, GL_KEEP);
     for (const VolumeGeometry* v : zfail) drawTriangles(gl, v->sides), drawTriangles(gl, v->caps);
   }
-  gl.call(GLCall::CullFace, {"GL_BACK"});
-  gl.call(GLCall::StencilOp, {"GL_KEEP", "GL_KEEP", "GL_KEEP"});
-  gl.call(GLCall::ColorMask, {"GL_TRUE", "GL_TRUE", "GL_TRUE", "GL_TRUE"});
-  gl.call(GLCall::DepthMask, {"GL_TRUE"});
+  gl.cullFace(GL_BACK);
+  gl.stencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  applyPassState(gl, passes::kWritesOn);
   return zfail.size();
 }
 
-std::uint64_t ShadowPass::drawVolumes(GLCommandStream& gl, int light, const ViewCamera& view, const Camera& camera,
+std::uint64_t ShadowPass::drawVolumes(GLApi& gl, int light, const ViewCamera& view, const Camera& camera,
                                       const StencilLevels& lv) {
   std::vector<const VolumeGeometry*> vols;
   for (const VolumeGeometry& v : volumes_[static_cast<std::size_t>(light)]) vols.push_back(&v);

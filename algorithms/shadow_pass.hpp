@@ -39,7 +39,7 @@ struct VolumeGeometry {
 // whose inside must end one below the outside); `alwaysZFail` counts every
 // volume behind the surface with its caps (light volumes: their near cap is a
 // mirror, which is not in the depth buffer). Returns the z-fail count.
-std::uint64_t countVolumes(GLCommandStream& gl, const std::vector<const VolumeGeometry*>& volumes,
+std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& volumes,
                            const ViewCamera& view, const Camera& camera, double aspect, const StencilLevels& levels,
                            bool inverted, bool alwaysZFail = false);
 
@@ -58,7 +58,7 @@ class ShadowPass {
 
   // Draws light `light`'s volumes as seen by `view` (GL state: the view is set
   // up by the caller). Returns how many volumes needed z-fail.
-  std::uint64_t drawVolumes(GLCommandStream& gl, int light, const ViewCamera& view, const Camera& camera,
+  std::uint64_t drawVolumes(GLApi& gl, int light, const ViewCamera& view, const Camera& camera,
                             const StencilLevels& levels);
   const std::vector<std::string>& warnings() const { return warnings_; }
   const std::vector<VolumeGeometry>& volumes(int light) const { return volumes_[static_cast<std::size_t>(light)]; }

@@ -5,7 +5,7 @@
 // so `world` maps the real scene into the virtual one.
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 #include "scene/scene.hpp"
 
 namespace mpr {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "cli/page_encoding.hpp"
-#include "pipeline/pixel_history_text.hpp"
+#include "stepper/pixel_history_text.hpp"
 
 namespace mpr::cli {
 namespace {

@@ -32,7 +32,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "pipeline/pixel_event_recorder.hpp"
+#include "stepper/pixel_event_recorder.hpp"
 
 namespace mpr::cli {
 

@@ -30,7 +30,7 @@ struct RenderOptions {
 
 std::string statsJson(const GLCommandStream& s, const Scene& scene, const RenderResult& r, double seconds) {
   std::ostringstream o;
-  const PipelineCounters& c = const_cast<GLCommandStream&>(s).context().counters();
+  const PipelineCounters& c = s.counters();
   o << "{\n  \"scene\": \"" << scene.file << "\",\n  \"width\": " << scene.render.width << ",\n  \"height\": "
     << scene.render.height << ",\n  \"seconds\": " << seconds << ",\n  \"gl_calls\": " << s.calls()
     << ",\n  \"gl_errors\": " << s.glErrors() << ",\n  \"scene_triangles\": " << scene.triangleCount()
@@ -86,9 +86,6 @@ int runRender(const RenderOptions& o) {
     if (tty) std::cerr << "\rrender: view " << p.views << " of at most " << p.predictedViews << "   " << std::flush;
   }, !o.noCull);
   for (const std::string& w : result.counts.warnings) std::cerr << scene.file << ": warning: " << w << "\n";
-  if (!o.traceFile.empty() && stream.usedWindowMap())
-    std::cerr << scene.file << ": warning: refraction_map end_of_pipeline is an emulated stage, not a GL call: the "
-              << "trace marks it in comments, and a replay (mpr gl, Mesa) draws the refracted views unmapped\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
   try {

@@ -13,9 +13,9 @@
 #include "cli/script_passes.hpp"
 #include "cli/step_page.hpp"
 #include "pipeline/gl_script_runner.hpp"
-#include "pipeline/gl_state_json.hpp"
-#include "pipeline/pixel_event_recorder.hpp"
-#include "pipeline/pixel_history_text.hpp"
+#include "stepper/gl_state_json.hpp"
+#include "stepper/pixel_event_recorder.hpp"
+#include "stepper/pixel_history_text.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace mpr::cli {

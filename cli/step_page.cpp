@@ -14,8 +14,8 @@
 #include "cli/script_passes.hpp"
 #include "cli/web_assets.hpp"
 #include "pipeline/gl_script_runner.hpp"
-#include "pipeline/gl_state_json.hpp"
-#include "pipeline/pixel_history_text.hpp"
+#include "stepper/gl_state_json.hpp"
+#include "stepper/pixel_history_text.hpp"
 
 namespace mpr::cli {
 namespace {

@@ -2,7 +2,9 @@
 
 #include "pipeline/gl_context.hpp"
 #include "pipeline/gl_enums.hpp"
-#include "pipeline/gl_script_runner.hpp"  // executeCall
+#include "pipeline/gl_dispatch.hpp"
+#include "pipeline/gl_emulator.hpp"
+#include "pipeline/gl_script_runner.hpp"  // glErrorReport
 
 namespace mpr {
 namespace {
@@ -27,10 +29,11 @@ MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile) {
   // glBegin/glEnd (glGetError is itself an error inside), so an error raised
   // between them is reported at glEnd, as GL keeps it.
   bool inBegin = false;
+  GLEmulator emulator(gl);
   for (const ScriptCommand& c : script.commands) {
     if (c.kind == ScriptCommand::Kind::Snapshot) out.snapshots.push_back(collect(c.label, gl.framebuffer()));
+    dispatch(emulator, c);
     if (c.kind != ScriptCommand::Kind::Call) continue;
-    executeCall(gl, c);
     if (c.call == GLCall::Begin) inBegin = true;
     if (c.call == GLCall::End) inBegin = false;
     if (inBegin) continue;

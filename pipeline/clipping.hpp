@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

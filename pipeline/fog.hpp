@@ -2,7 +2,7 @@
 // Fog (GL 1.1 section 3.9): the blend factor f from the fog coordinate c, the
 // eye-space distance |z_eye| (Mesa's default fog distance mode), and its
 // application to a colour. f is clamped to [0, 1].
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

@@ -23,7 +23,7 @@
 #include "pipeline/lighting.hpp"
 #include "pipeline/matrix_stack.hpp"
 #include "pipeline/primitive_assembly.hpp"
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

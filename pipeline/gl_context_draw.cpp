@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "pipeline/gl_context.hpp"
-#include "pipeline/transforms.hpp"
+#include "util/transforms.hpp"
 #include "raster/triangle_rasterizer.hpp"
 
 namespace mpr {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "pipeline/gl_context.hpp"
-#include "pipeline/transforms.hpp"
+#include "util/transforms.hpp"
 
 namespace mpr {
 

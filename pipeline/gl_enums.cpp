@@ -4,6 +4,8 @@
 // that a function does not accept is a GL error (GL_INVALID_ENUM).
 #include "pipeline/gl_enums.hpp"
 
+#include <cstdio>
+#include <iterator>
 #include <unordered_map>
 
 namespace mpr {
@@ -812,6 +814,57 @@ std::optional<std::uint32_t> glEnumValue(std::string_view name) {
   const auto it = table.find(name);
   if (it == table.end()) return std::nullopt;
   return it->second;
+}
+
+std::optional<std::string_view> glEnumName(std::uint32_t value) {
+  if (value == 0) return "GL_ZERO";
+  if (value == 1) return "GL_ONE";
+  static const std::unordered_map<std::uint32_t, std::string_view> names = [] {
+    auto alias = [](std::string_view n) {
+      for (std::string_view suffix : {"_BIT", "_EXT", "_ARB"})
+        if (n.size() > suffix.size() && n.substr(n.size() - suffix.size()) == suffix) return true;
+      return false;
+    };
+    std::unordered_map<std::uint32_t, std::string_view> t;
+    for (const EnumEntry& e : kEnums)
+      if (!alias(e.name)) t.emplace(e.value, e.name);  // the first name stays
+    for (const EnumEntry& e : kEnums) t.emplace(e.value, e.name);  // values that only have an alias
+    return t;
+  }();
+  const auto it = names.find(value);
+  if (it == names.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<std::string_view> glPrimitiveName(std::uint32_t mode) {
+  static constexpr std::string_view names[] = {"GL_POINTS",         "GL_LINES",        "GL_LINE_LOOP",
+                                               "GL_LINE_STRIP",     "GL_TRIANGLES",    "GL_TRIANGLE_STRIP",
+                                               "GL_TRIANGLE_FAN",   "GL_QUADS",        "GL_QUAD_STRIP",
+                                               "GL_POLYGON"};
+  if (mode >= std::size(names)) return std::nullopt;
+  return names[mode];
+}
+
+std::string glBufferBitsText(std::uint32_t bits) {
+  static constexpr EnumEntry kBits[] = {{"GL_COLOR_BUFFER_BIT", 0x4000},
+                                        {"GL_DEPTH_BUFFER_BIT", 0x0100},
+                                        {"GL_STENCIL_BUFFER_BIT", 0x0400},
+                                        {"GL_ACCUM_BUFFER_BIT", 0x0200}};
+  std::uint32_t known = 0;
+  for (const EnumEntry& b : kBits) known |= b.value;
+  if (bits == 0 || (bits & ~known) != 0) {
+    // A script reads a bitfield as names or as one number, not a mixture.
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "0x%X", bits);
+    return buf;
+  }
+  std::string out;
+  for (const EnumEntry& b : kBits)
+    if (bits & b.value) {
+      if (!out.empty()) out += '|';
+      out += b.name;
+    }
+  return out;
 }
 
 std::string_view glErrorName(std::uint32_t error) {

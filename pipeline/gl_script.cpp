@@ -14,14 +14,12 @@
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl_enums.hpp"
-#include "pipeline/spelling.hpp"
+#include "util/spelling.hpp"
 
 namespace mpr {
 namespace {
 
-// Argument kinds of the signature table.
-//   i integer, f float, e enum, b bitfield, z boolean, u unsigned byte,
-//   m 16 floats (matrix), v the rest as floats (count fixed by the pname)
+// The signatures are gl_calls.def's (pipeline/gl_call.hpp).
 struct CallSpec {
   std::string_view name;
   GLCall call;
@@ -29,72 +27,8 @@ struct CallSpec {
 };
 
 constexpr CallSpec kCalls[] = {
-    {"glViewport", GLCall::Viewport, "iiii"},
-    {"glScissor", GLCall::Scissor, "iiii"},
-    {"glClearColor", GLCall::ClearColor, "ffff"},
-    {"glClearDepth", GLCall::ClearDepth, "f"},
-    {"glClearStencil", GLCall::ClearStencil, "i"},
-    {"glClearAccum", GLCall::ClearAccum, "ffff"},
-    {"glClear", GLCall::Clear, "b"},
-    {"glColorMask", GLCall::ColorMask, "zzzz"},
-    {"glDepthMask", GLCall::DepthMask, "z"},
-    {"glStencilMask", GLCall::StencilMask, "i"},
-    {"glFinish", GLCall::Finish, ""},
-    {"glFlush", GLCall::Flush, ""},
-    {"glEnable", GLCall::Enable, "e"},
-    {"glDisable", GLCall::Disable, "e"},
-    {"glStencilFunc", GLCall::StencilFunc, "eii"},
-    {"glStencilOp", GLCall::StencilOp, "eee"},
-    {"glDepthFunc", GLCall::DepthFunc, "e"},
-    {"glDepthRange", GLCall::DepthRange, "ff"},
-    {"glBlendFunc", GLCall::BlendFunc, "ee"},
-    {"glAlphaFunc", GLCall::AlphaFunc, "ef"},
-    {"glCullFace", GLCall::CullFace, "e"},
-    {"glFrontFace", GLCall::FrontFace, "e"},
-    {"glShadeModel", GLCall::ShadeModel, "e"},
-    {"glFogf", GLCall::Fogf, "ef"},
-    {"glFogi", GLCall::Fogi, "ei"},
-    {"glFogfv", GLCall::Fogfv, "ev"},
-    {"glHint", GLCall::Hint, "ee"},
-    {"glMatrixMode", GLCall::MatrixMode, "e"},
-    {"glLoadIdentity", GLCall::LoadIdentity, ""},
-    {"glLoadMatrixf", GLCall::LoadMatrixf, "m"},
-    {"glLoadMatrixd", GLCall::LoadMatrixd, "m"},
-    {"glMultMatrixf", GLCall::MultMatrixf, "m"},
-    {"glMultMatrixd", GLCall::MultMatrixd, "m"},
-    {"glPushMatrix", GLCall::PushMatrix, ""},
-    {"glPopMatrix", GLCall::PopMatrix, ""},
-    {"glTranslatef", GLCall::Translatef, "fff"},
-    {"glTranslated", GLCall::Translated, "fff"},
-    {"glRotatef", GLCall::Rotatef, "ffff"},
-    {"glRotated", GLCall::Rotated, "ffff"},
-    {"glScalef", GLCall::Scalef, "fff"},
-    {"glScaled", GLCall::Scaled, "fff"},
-    {"glFrustum", GLCall::Frustum, "ffffff"},
-    {"glOrtho", GLCall::Ortho, "ffffff"},
-    {"gluPerspective", GLCall::Perspective, "ffff"},
-    {"gluLookAt", GLCall::LookAt, "fffffffff"},
-    {"glClipPlane", GLCall::ClipPlane, "effff"},
-    {"glLightf", GLCall::Lightf, "eef"},
-    {"glLightfv", GLCall::Lightfv, "eev"},
-    {"glLightModelf", GLCall::LightModelf, "ef"},
-    {"glLightModelfv", GLCall::LightModelfv, "ev"},
-    {"glLightModeli", GLCall::LightModeli, "ei"},
-    {"glMaterialf", GLCall::Materialf, "eef"},
-    {"glMaterialfv", GLCall::Materialfv, "eev"},
-    {"glColorMaterial", GLCall::ColorMaterial, "ee"},
-    {"glColor3f", GLCall::Color3f, "fff"},
-    {"glColor4f", GLCall::Color4f, "ffff"},
-    {"glColor3ub", GLCall::Color3ub, "uuu"},
-    {"glColor4ub", GLCall::Color4ub, "uuuu"},
-    {"glNormal3f", GLCall::Normal3f, "fff"},
-    {"glBegin", GLCall::Begin, "e"},
-    {"glEnd", GLCall::End, ""},
-    {"glVertex2f", GLCall::Vertex2f, "ff"},
-    {"glVertex3f", GLCall::Vertex3f, "fff"},
-    {"glVertex4f", GLCall::Vertex4f, "ffff"},
-    {"glRectf", GLCall::Rectf, "ffff"},
-    {"glAccum", GLCall::Accum, "ef"},
+#define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) {#cFunction, GLCall::Enum, kinds},
+#include "pipeline/gl_calls.def"
 };
 
 const CallSpec* findCall(std::string_view name) {
@@ -122,41 +56,6 @@ std::string closestCallName(std::string_view name) {
   std::vector<std::string_view> names;
   for (const CallSpec& c : kCalls) names.push_back(c.name);
   return closestMatch(name, names, 4, true);
-}
-
-// The number of values a `...v` call takes for its pname, or 0 when the pname
-// is not one the function takes (GL will reject it; any 1..4 values parse).
-int vectorCount(GLCall call, std::uint32_t pname) {
-  switch (call) {
-    case GLCall::Lightfv:
-      switch (pname) {
-        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
-        case GL_SPOT_DIRECTION: return 3;
-        case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
-        case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: return 1;
-      }
-      return 0;
-    case GLCall::Materialfv:
-      switch (pname) {
-        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: return 4;
-        case GL_COLOR_INDEXES: return 3;
-        case GL_SHININESS: return 1;
-      }
-      return 0;
-    case GLCall::Fogfv:
-      switch (pname) {
-        case GL_FOG_COLOR: return 4;
-        case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END: case GL_FOG_INDEX: return 1;
-      }
-      return 0;
-    case GLCall::LightModelfv:
-      switch (pname) {
-        case GL_LIGHT_MODEL_AMBIENT: return 4;
-        case GL_LIGHT_MODEL_LOCAL_VIEWER: case GL_LIGHT_MODEL_TWO_SIDE: return 1;
-      }
-      return 0;
-    default: return 0;
-  }
 }
 
 struct Token {
@@ -214,6 +113,10 @@ class Parser {
   }
 
   ScriptArg parseArg(char kind, const Token& tok, int line, std::string_view callName, int index) const {
+    // A primitive mode parses as an enum, an enum-or-integer as an integer
+    // (the distinction only names values when a trace is written).
+    if (kind == 'p') kind = 'e';
+    if (kind == 'n') kind = 'i';
     ScriptArg a;
     a.column = tok.column;
     a.text = std::string(tok.text);
@@ -285,7 +188,7 @@ class Parser {
     Script script;
     script.file = file_;
     script.text = std::string(text);
-    bool sawCall = false, sawFramebuffer = false, sawProfile = false;
+    bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false;
     std::set<std::string> snapshots;
     int lineNo = 0;
     size_t pos = 0;
@@ -356,8 +259,35 @@ class Parser {
           script.commands.push_back(std::move(cmd));
           continue;
         }
+        if (head.text == "@window_map") {
+          // docs/gl-script-directives.md: 9 numbers (column by column) or off.
+          cmd.kind = ScriptCommand::Kind::WindowMap;
+          if (toks.size() == 2 && toks[1].text == "off") {
+            script.commands.push_back(std::move(cmd));
+            continue;
+          }
+          if (toks.size() != 10)
+            fail(lineNo, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
+          for (std::size_t t = 1; t < toks.size(); ++t)
+            cmd.args.push_back(parseArg('f', toks[t], lineNo, "@window_map", static_cast<int>(t - 1)));
+          script.commands.push_back(std::move(cmd));
+          continue;
+        }
+        if (head.text == "@count_fragments") {
+          if (toks.size() != 2 || (toks[1].text != "begin" && toks[1].text != "end"))
+            fail(lineNo, head.column, "@count_fragments takes begin or end");
+          const bool begin = toks[1].text == "begin";
+          if (begin == counting) fail(lineNo, toks[1].column, begin ? "@count_fragments begin twice without end"
+                                                                    : "@count_fragments end without begin");
+          counting = begin;
+          cmd.kind = ScriptCommand::Kind::FragmentCount;
+          cmd.label = std::string(toks[1].text);
+          script.commands.push_back(std::move(cmd));
+          continue;
+        }
         fail(lineNo, head.column, "unknown directive '" + std::string(head.text) +
-                                      "' (known: @framebuffer, @profile, @pass, @snapshot)");
+                                      "' (known: @framebuffer, @profile, @pass, @snapshot, @window_map, "
+                                      "@count_fragments)");
       }
 
       const CallSpec* spec = findCall(head.text);
@@ -391,7 +321,7 @@ class Parser {
         if (kind == 'm') {
           for (int j = 0; j < 16; ++j, ++t) cmd.args.push_back(parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
         } else if (kind == 'v') {
-          const int want = vectorCount(spec->call, cmd.args.back().bits);
+          const int want = glVectorCount(spec->call, cmd.args.back().bits);
           const size_t have = toks.size() - t;
           if (want > 0 && have != static_cast<size_t>(want))
             fail(lineNo, have > static_cast<size_t>(want) ? toks[t + want].column : endColumn,
@@ -443,16 +373,45 @@ class Parser {
 
 }  // namespace
 
-std::string_view glCallName(GLCall c) {
-  for (const CallSpec& s : kCalls)
-    if (s.call == c) return s.name;
-  return "?";
-}
-
 std::size_t Script::callCount() const {
   return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) {
     return c.kind == ScriptCommand::Kind::Call;
   }));
+}
+
+// The number of values a `...v` call takes for its pname, or 0 when the pname
+// is not one the function takes (GL will reject it; any 1..4 values parse).
+int glVectorCount(GLCall call, std::uint32_t pname) {
+  switch (call) {
+    case GLCall::Lightfv:
+      switch (pname) {
+        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
+        case GL_SPOT_DIRECTION: return 3;
+        case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
+        case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: return 1;
+      }
+      return 0;
+    case GLCall::Materialfv:
+      switch (pname) {
+        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: return 4;
+        case GL_COLOR_INDEXES: return 3;
+        case GL_SHININESS: return 1;
+      }
+      return 0;
+    case GLCall::Fogfv:
+      switch (pname) {
+        case GL_FOG_COLOR: return 4;
+        case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END: case GL_FOG_INDEX: return 1;
+      }
+      return 0;
+    case GLCall::LightModelfv:
+      switch (pname) {
+        case GL_LIGHT_MODEL_AMBIENT: return 4;
+        case GL_LIGHT_MODEL_LOCAL_VIEWER: case GL_LIGHT_MODEL_TWO_SIDE: return 1;
+      }
+      return 0;
+    default: return 0;
+  }
 }
 
 Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }

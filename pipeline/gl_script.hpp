@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "pipeline/gl_call.hpp"
+
 namespace mpr {
 
 // A user error in a script: FILE:LINE:COLUMN: message.
@@ -26,23 +28,6 @@ class ScriptError : public std::runtime_error {
   int line_, column_;
 };
 
-// The calls of the spec's call set.
-enum class GLCall : std::uint8_t {
-  Viewport, Scissor, ClearColor, ClearDepth, ClearStencil, ClearAccum, Clear, ColorMask, DepthMask,
-  StencilMask, Finish, Flush,
-  Enable, Disable, StencilFunc, StencilOp, DepthFunc, DepthRange, BlendFunc, AlphaFunc, CullFace,
-  FrontFace, ShadeModel, Fogf, Fogi, Fogfv, Hint,
-  MatrixMode, LoadIdentity, LoadMatrixf, LoadMatrixd, MultMatrixf, MultMatrixd, PushMatrix, PopMatrix,
-  Translatef, Translated, Rotatef, Rotated, Scalef, Scaled, Frustum, Ortho, Perspective, LookAt, ClipPlane,
-  Lightf, Lightfv, LightModelf, LightModelfv, LightModeli, Materialf, Materialfv, ColorMaterial,
-  Color3f, Color4f, Color3ub, Color4ub, Normal3f,
-  Begin, End, Vertex2f, Vertex3f, Vertex4f, Rectf,
-  Accum,
-};
-
-// The C name of a call ("glStencilFunc").
-std::string_view glCallName(GLCall c);
-
 struct ScriptArg {
   double number = 0.0;       // the value as a number (enums: their value)
   std::uint32_t bits = 0;    // integer and enum arguments as GL's 32-bit word
@@ -51,7 +36,9 @@ struct ScriptArg {
 };
 
 struct ScriptCommand {
-  enum class Kind : std::uint8_t { Call, Pass, Snapshot } kind = Kind::Call;
+  // A GL call, or a directive: @pass, @snapshot, @window_map (args: 9
+  // numbers, or none for off), @count_fragments (label: begin or end).
+  enum class Kind : std::uint8_t { Call, Pass, Snapshot, WindowMap, FragmentCount } kind = Kind::Call;
   int line = 0;
   GLCall call = GLCall::Finish;
   std::vector<ScriptArg> args;

@@ -21,7 +21,7 @@ struct ScriptHooks {
 // "LINE: GL_INVALID_ENUM in glStencilFunc": how a GL error is reported.
 std::string glErrorReport(const ScriptCommand& call, std::uint32_t error);
 
-// One call on the context (no error reporting).
+// One call or directive on the context (no error reporting).
 void executeCall(GLContext& gl, const ScriptCommand& call);
 
 // Runs every command; returns the number of GL errors raised.

@@ -5,7 +5,7 @@
 // the colour-material tracking of the current colour.
 #include <array>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

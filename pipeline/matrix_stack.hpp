@@ -2,7 +2,7 @@
 // A GL matrix stack: a top matrix and the saved ones below it.
 #include <vector>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 #include "scene/scene.hpp"
 
 namespace mpr {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The local model at a surface point: what one light adds there, and the
 // part that needs no light (emission and the scene ambient).
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 #include "reference/reference_renderer.hpp"
 #include "scene/scene.hpp"
 

@@ -4,7 +4,7 @@
 // to reach B.
 #include <optional>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 #include "reference/specular_face.hpp"
 
 namespace mpr {

@@ -6,7 +6,7 @@
 // scene's render switches say, because physics has no switches.
 #include <vector>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 #include "scene/scene.hpp"
 
 namespace mpr {

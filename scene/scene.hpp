@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

@@ -12,8 +12,8 @@
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
-#include "pipeline/spelling.hpp"
-#include "pipeline/transforms.hpp"
+#include "util/spelling.hpp"
+#include "util/transforms.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/primitives.hpp"
 

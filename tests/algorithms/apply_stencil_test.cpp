@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "algorithms/apply_stencil.hpp"
+#include "algorithms/gl_command_stream.hpp"
 #include "framebuffer/profile.hpp"
 
 namespace mpr {
@@ -25,7 +26,7 @@ void expectMeaning(const PaperStencil& s, const std::function<std::uint32_t(std:
       context.framebuffer().stencil(x, y) = static_cast<std::uint8_t>(y * 16 + x);
       context.framebuffer().depth(x, y) = 12345u;
     }
-  gl.call(GLCall::Enable, {"GL_STENCIL_TEST"});
+  gl.enable(GL_STENCIL_TEST);
   apply_stencil(gl, s, kLevels);
   EXPECT_EQ(gl.glErrors(), 0u);
   int wrong = 0;
@@ -86,16 +87,16 @@ TEST(ApplyStencil, EqualKeepChangesNothing) {
 
 TEST(ApplyStencil, TheGLSettingsAreTheDocumentedOnes) {
   const GLStencilSetting a = translateStencil({PaperCompare::Equal, 0, PaperPass::Replace, 192}, kLevels);
-  EXPECT_STREQ(a.func, "GL_EQUAL");
+  EXPECT_EQ(a.func, static_cast<GLenum>(GL_EQUAL));
   EXPECT_EQ(a.ref, 0u);
   EXPECT_EQ(a.writeMask, 0xC0u);
-  EXPECT_STREQ(a.zpass, "GL_INVERT");
+  EXPECT_EQ(a.zpass, static_cast<GLenum>(GL_INVERT));
   const GLStencilSetting b = translateStencil({PaperCompare::Greater, 128, PaperPass::Replace, 192}, kLevels);
-  EXPECT_STREQ(b.func, "GL_LEQUAL");
+  EXPECT_EQ(b.func, static_cast<GLenum>(GL_LEQUAL));
   EXPECT_EQ(b.ref, 192u);
   EXPECT_EQ(b.valueMask, 0x80u);
   EXPECT_EQ(b.writeMask, 0xFFu);
-  EXPECT_STREQ(b.zpass, "GL_REPLACE");
+  EXPECT_EQ(b.zpass, static_cast<GLenum>(GL_REPLACE));
   EXPECT_THROW(translateStencil({PaperCompare::Greater, 5, PaperPass::Replace, 0}, kLevels), std::logic_error);
 }
 
@@ -107,7 +108,7 @@ TEST(ApplyStencil, FourBitProfile) {
   GLContext context(16, 1, p);
   GLCommandStream gl(context, false);
   for (int x = 0; x < 16; ++x) context.framebuffer().stencil(x, 0) = static_cast<std::uint8_t>(x);
-  gl.call(GLCall::Enable, {"GL_STENCIL_TEST"});
+  gl.enable(GL_STENCIL_TEST);
   apply_stencil(gl, {PaperCompare::Greater, l.shadMin, PaperPass::Replace, l.shadZero}, l);
   for (std::uint32_t v = 0; v < 16; ++v) EXPECT_EQ(context.stencilAt(static_cast<int>(v), 0), v >= 8 ? 12u : v);
   apply_stencil(gl, {PaperCompare::Equal, 0, PaperPass::Replace, l.shadZero}, l);

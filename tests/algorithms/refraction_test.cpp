@@ -8,7 +8,7 @@
 
 #include "algorithms/refraction.hpp"
 #include "algorithms/scene_renderer.hpp"
-#include "pipeline/quad_to_quad.hpp"
+#include "algorithms/quad_to_quad.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace mpr {
@@ -176,9 +176,10 @@ render: {width: 32, height: 24, refraction_map: )") + placement + "}\n", "map.ya
   EXPECT_GT(distinct(stage.depths), 20);
   EXPECT_EQ(kept.depths.size(), zeroed.depths.size());
   EXPECT_EQ(stage.depths.size(), kept.depths.size());
-  // The stage is not a GL call: the trace says so in a comment.
-  EXPECT_NE(stage.trace.find("# MPR end-of-pipeline map"), std::string::npos);
-  EXPECT_EQ(kept.trace.find("# MPR end-of-pipeline map"), std::string::npos);
+  // The stage is not a GL call: it is the @window_map directive
+  // (docs/gl-script-directives.md), so the trace replays it.
+  EXPECT_NE(stage.trace.find("\n@window_map "), std::string::npos);
+  EXPECT_EQ(kept.trace.find("\n@window_map "), std::string::npos);
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "pipeline/gl_context.hpp"
-#include "pipeline/quad_to_quad.hpp"
 
 namespace mpr {
 namespace {
@@ -292,33 +291,6 @@ TEST(GLContext, LinearFogAtAChosenDepth) {
     // 0.5 * 255 = 127.5, rounded to nearest even: 128. Alpha is not fogged.
     EXPECT_EQ(gl.colorAt(2, 2), (Rgba8{128, 128, 128, 255})) << hint;
   }
-}
-
-TEST(GLContext, QuadToQuadMatrixOnTheStackMapsCorners) {
-  // The unit square drawn through the (A5) matrix lands on the target quad:
-  // pixel centres just inside each target corner are covered, the z column is
-  // zeroed so depth is the same everywhere.
-  GLContext gl = windowContext(32, 32);
-  const Quad unit = {DVec2(0, 0), DVec2(1, 0), DVec2(1, 1), DVec2(0, 1)};
-  const Quad target = {DVec2(4, 4), DVec2(28, 8), DVec2(24, 28), DVec2(6, 20)};
-  const Mat4 m = quadToQuadMatrix4(quadToQuad(unit, target));
-  gl.multMatrix(&m[0][0]);
-  gl.enable(GL_STENCIL_TEST);
-  gl.stencilFunc(GL_ALWAYS, 9, 0xFF);
-  gl.stencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-  gl.begin(GL_QUADS);
-  gl.vertex4f(0, 0, 0.7f, 1);
-  gl.vertex4f(1, 0, 0.7f, 1);
-  gl.vertex4f(1, 1, 0.7f, 1);
-  gl.vertex4f(0, 1, 0.7f, 1);
-  gl.end();
-  EXPECT_EQ(gl.stencilAt(5, 5), 9u);
-  EXPECT_EQ(gl.stencilAt(26, 8), 9u);
-  EXPECT_EQ(gl.stencilAt(23, 26), 9u);
-  EXPECT_EQ(gl.stencilAt(6, 19), 9u);
-  EXPECT_EQ(gl.stencilAt(3, 3), 0u);
-  EXPECT_EQ(gl.stencilAt(29, 8), 0u);
-  EXPECT_EQ(gl.stencilAt(16, 2), 0u);
 }
 
 TEST(GLContext, GLErrorsAreRecordedAndTheCallIgnored) {

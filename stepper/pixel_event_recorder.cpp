@@ -1,4 +1,4 @@
-#include "pipeline/pixel_event_recorder.hpp"
+#include "stepper/pixel_event_recorder.hpp"
 
 namespace mpr {
 namespace {

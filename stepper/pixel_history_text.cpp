@@ -1,8 +1,8 @@
-#include "pipeline/pixel_history_text.hpp"
+#include "stepper/pixel_history_text.hpp"
 
 #include <sstream>
 
-#include "pipeline/gl_state_json.hpp"
+#include "stepper/gl_state_json.hpp"
 
 namespace mpr {
 namespace {

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "framebuffer/fragment_ops.hpp"
-#include "pipeline/pixel_event_recorder.hpp"
+#include "stepper/pixel_event_recorder.hpp"
 
 namespace mpr {
 

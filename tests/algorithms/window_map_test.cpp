@@ -8,7 +8,7 @@
 #include <cstdlib>
 
 #include "pipeline/gl_context.hpp"
-#include "pipeline/quad_to_quad.hpp"
+#include "algorithms/quad_to_quad.hpp"
 
 namespace mpr {
 namespace {
@@ -138,7 +138,9 @@ TEST(WindowMap, TheHorizonLineClips) {
       const double xs = 0.5 * xp / (1.0 - xp), ys = yp * (xs + 0.5);
       const bool covered = xs <= 1.0 && std::fabs(ys) <= 1.0;
       const bool nearEdge = std::fabs(xs - 1.0) < 0.05 || std::fabs(std::fabs(ys) - 1.0) < 0.05;
-      if (!nearEdge) EXPECT_EQ(gl.stencilAt(x, y), covered ? 3u : 0u) << x << "," << y;
+      if (!nearEdge) {
+        EXPECT_EQ(gl.stencilAt(x, y), covered ? 3u : 0u) << x << "," << y;
+      }
     }
   EXPECT_EQ(gl.stencilAt(27, 16), 0u);
   EXPECT_EQ(gl.stencilAt(0, 16), 3u);

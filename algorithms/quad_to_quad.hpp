@@ -8,7 +8,7 @@
 #include <array>
 #include <stdexcept>
 
-#include "pipeline/vecmath.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 

@@ -1,11 +1,13 @@
 // The quad-to-quad projective map of the 1994 paper's Appendix (A1)-(A5).
+#include <GL/gl.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
 
-#include "pipeline/quad_to_quad.hpp"
+#include "algorithms/quad_to_quad.hpp"
+#include "pipeline/gl_context.hpp"
 
 namespace mpr {
 namespace {
@@ -98,6 +100,37 @@ TEST(QuadToQuad, Matrix4ZeroesDepthAndMatchesTheThreeByThree) {
     EXPECT_EQ(g[2][i], 0.0f);
     EXPECT_EQ(g[i][2], 0.0f);
   }
+}
+
+TEST(QuadToQuad, MatrixOnTheGLStackMapsCorners) {
+  // The unit square drawn through the (A5) matrix lands on the target quad:
+  // pixel centres just inside each target corner are covered, the z column is
+  // zeroed so depth is the same everywhere.
+  GLContext gl(32, 32, indigoProfile());
+  // Object coordinates are window coordinates.
+  gl.matrixMode(GL_PROJECTION);
+  gl.ortho(0, 32, 0, 32, -1, 1);
+  gl.matrixMode(GL_MODELVIEW);
+  const Quad unit = {DVec2(0, 0), DVec2(1, 0), DVec2(1, 1), DVec2(0, 1)};
+  const Quad target = {DVec2(4, 4), DVec2(28, 8), DVec2(24, 28), DVec2(6, 20)};
+  const Mat4 m = quadToQuadMatrix4(quadToQuad(unit, target));
+  gl.multMatrix(&m[0][0]);
+  gl.enable(GL_STENCIL_TEST);
+  gl.stencilFunc(GL_ALWAYS, 9, 0xFF);
+  gl.stencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  gl.begin(GL_QUADS);
+  gl.vertex4f(0, 0, 0.7f, 1);
+  gl.vertex4f(1, 0, 0.7f, 1);
+  gl.vertex4f(1, 1, 0.7f, 1);
+  gl.vertex4f(0, 1, 0.7f, 1);
+  gl.end();
+  EXPECT_EQ(gl.stencilAt(5, 5), 9u);
+  EXPECT_EQ(gl.stencilAt(26, 8), 9u);
+  EXPECT_EQ(gl.stencilAt(23, 26), 9u);
+  EXPECT_EQ(gl.stencilAt(6, 19), 9u);
+  EXPECT_EQ(gl.stencilAt(3, 3), 0u);
+  EXPECT_EQ(gl.stencilAt(29, 8), 0u);
+  EXPECT_EQ(gl.stencilAt(16, 2), 0u);
 }
 
 }  // namespace

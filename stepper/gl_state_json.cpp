@@ -1,4 +1,4 @@
-#include "pipeline/gl_state_json.hpp"
+#include "stepper/gl_state_json.hpp"
 
 #include <GL/gl.h>
 

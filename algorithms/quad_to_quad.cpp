@@ -1,4 +1,4 @@
-#include "pipeline/quad_to_quad.hpp"
+#include "algorithms/quad_to_quad.hpp"
 
 #include <cmath>
 #include <string>

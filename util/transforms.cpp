@@ -1,4 +1,4 @@
-#include "pipeline/transforms.hpp"
+#include "util/transforms.hpp"
 
 #include <cmath>
 

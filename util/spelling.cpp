@@ -1,4 +1,4 @@
-#include "pipeline/spelling.hpp"
+#include "util/spelling.hpp"
 
 #include <algorithm>
 #include <cctype>

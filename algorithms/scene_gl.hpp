@@ -1,0 +1,42 @@
+#pragma once
+// The GL plumbing of the 1994 algorithm: view set-up, lights, materials and
+// geometry, as typed GL calls. Figure 4's routines (draw_window.cpp) call it.
+#include "algorithms/ref_face.hpp"
+#include "algorithms/view_camera.hpp"
+#include "pipeline/gl_api.hpp"
+#include "scene/scene.hpp"
+
+namespace mpr {
+
+class SceneGL {
+ public:
+  static constexpr int kMaxGLLights = 8;
+
+  // `usesStencil`: the render uses the stencil (shadows or reflections), so
+  // the clip plane is switched off explicitly in views without one.
+  SceneGL(const Scene& scene, GLApi& gl, bool usesStencil);
+
+  // The view of `cam`: projection (with a refracted view's image map),
+  // modelview = lookAt * world, winding, clip plane.
+  void setupView(const ViewCamera& cam);
+  // GL light `index` as the scene's point light.
+  void setLight(int index, const PointLight& light);
+  // Ambient and up to eight lights in one pass (GL's own sum), and back to light 0 alone.
+  void enableAllLights();
+  void disableExtraLights();
+  // Every term of a material; or the ambient pass's terms (ambient, emission)
+  // or a light pass's (diffuse, specular).
+  void setFullMaterial(const SceneMaterial& m);
+  void setMaterial(const SceneMaterial& m, bool ambientPass);
+  void drawTriangles(const Mesh& mesh);
+  void drawPolygon(const RefFace& face, bool withNormal);
+  double aspect() const;
+
+ private:
+  static GLenum lightName(int i);
+  const Scene& s_;
+  GLApi& gl_;
+  bool usesStencil_;
+};
+
+}  // namespace mpr
