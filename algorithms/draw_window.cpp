@@ -32,9 +32,10 @@ namespace {
 class WindowRenderer {
  public:
   WindowRenderer(const Scene& s, const RenderPlan& p, GLCommandStream& gl,
-                 const std::function<void(const DrawWindowProgress&)>& progress)
+                 const std::function<void(const DrawWindowProgress&)>& progress, const ViewSample& sample)
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
         shadows_(s, p), gl_scene_(s, gl, p.shadows || p.reflections) {
+    gl_scene_.setViewSample(sample);
     if (p.shadows) refLights_ = reflectedLights(s, faces_);
     counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
   }
@@ -385,8 +386,9 @@ class WindowRenderer {
 }  // namespace
 
 DrawWindowCounts drawScene(const Scene& scene, const RenderPlan& plan, GLCommandStream& gl,
-                           const std::function<void(const DrawWindowProgress&)>& progress) {
-  return WindowRenderer(scene, plan, gl, progress).run();
+                           const std::function<void(const DrawWindowProgress&)>& progress,
+                           const ViewSample& sample) {
+  return WindowRenderer(scene, plan, gl, progress, sample).run();
 }
 
 }  // namespace mpr

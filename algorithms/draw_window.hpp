@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algorithms/gl_command_stream.hpp"
+#include "algorithms/image_samples.hpp"
 #include "algorithms/render_plan.hpp"
 #include "scene/scene.hpp"
 
@@ -29,7 +30,9 @@ struct DrawWindowProgress {
   std::string label;
 };
 
+// `sample`: the view of one image of an accumulation (image_samples.hpp).
 DrawWindowCounts drawScene(const Scene& scene, const RenderPlan& plan, GLCommandStream& gl,
-                           const std::function<void(const DrawWindowProgress&)>& progress = {});
+                           const std::function<void(const DrawWindowProgress&)>& progress = {},
+                           const ViewSample& sample = {});
 
 }  // namespace mpr

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "algorithms/image_samples.hpp"
 #include "algorithms/ref_light.hpp"
 #include "algorithms/shadow_pass.hpp"
 #include "framebuffer/profile.hpp"
@@ -10,11 +11,13 @@
 namespace mpr {
 
 std::uint64_t RenderPlan::predictedViewsAtLevel(int level) const {
-  if (level == 0) return 1;
+  // Every accumulated image is a whole render (image_samples.hpp).
+  const auto n = static_cast<std::uint64_t>(images);
+  if (level == 0) return n;
   if (!reflections || level > recursionDepth) return 0;
   // 1994 eq. (5): n (n - 1)^(d - 1) renderings at depth d; a planar face
   // never sees itself, so each view recurses into the other n - 1 faces.
-  std::uint64_t v = static_cast<std::uint64_t>(refFaces);
+  std::uint64_t v = n * static_cast<std::uint64_t>(refFaces);
   for (int k = 1; k < level; ++k) v *= static_cast<std::uint64_t>(refFaces - 1);
   return v;
 }
@@ -79,6 +82,9 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   p.shadows = scene.render.shadows && p.lights > 0 && (p.shadowCasters > 0 || refLights > 0);
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
   if (p.shadows) p.reflectedLights = refLights;
+  p.images = accumulatedImages(scene);
+  if (p.images == 1 && scene.render.softShadowSamples > 1)
+    p.notes.push_back("soft_shadow_samples without a light radius: hard shadows, one image");
   if (p.lights == 0) p.notes.push_back("no lights: the ambient pass only");
   else if (!scene.render.shadows) p.notes.push_back("shadows off: no shadow volumes");
   else if (!p.shadows) p.notes.push_back("no object casts a shadow and no light reaches beyond a specular face: no shadow volumes");
@@ -94,6 +100,10 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
     << ", SHAD_ZERO " << p.levels.shadZero << ", max " << p.levels.max << " (at most "
     << p.levels.maxShadowDepthAbove() << " nested shadow volumes)\n";
   o << "plan (1994 Figure 4):\n";
+  if (p.images > 1)
+    o << "  accumulation: " << p.images << " whole renders summed with weight 1/" << p.images << " ("
+      << s.render.antialiasSamples << " antialias" << (s.camera.aperture > 0.0f ? " and lens" : "") << " samples, "
+      << s.render.softShadowSamples << " light samples of the lights with a radius; each table cycled)\n";
   o << "  draw_window: ambient pass, then per light "
     << (p.shadows ? "shadow volumes (draw_all_shadows) and a lit pass" : "a lit pass (no shadows)") << "\n";
   if (p.reflectedLights > 0)

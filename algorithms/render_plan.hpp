@@ -15,6 +15,7 @@ namespace mpr {
 
 struct RenderPlan {
   int lights = 0;
+  int images = 1;             // whole renders accumulated (antialias, lens and light samples)
   int refFaces = 0;           // faces the recursion looks through (mirror and refracting)
   int refractingFaces = 0;    // of which refract (the rest reflect)
   int shadowCasters = 0;      // objects with a shadow volume: casters and refracting faces

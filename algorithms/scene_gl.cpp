@@ -22,6 +22,12 @@ void SceneGL::setupView(const ViewCamera& cam) {
   gl_.windowMap(windowMap);
   gl_.matrixMode(GL_PROJECTION);
   gl_.loadIdentity();
+  if (sample_.pixelOffset != DVec2(0.0)) {
+    // Antialiasing by accumulation: the whole image moved by a fraction of
+    // a pixel in normalised device coordinates, after every other step
+    // (Haeberli and Akeley 1990), so refracted views move with it.
+    gl_.translated(2.0 * sample_.pixelOffset.x / s_.render.width, 2.0 * sample_.pixelOffset.y / s_.render.height, 0.0);
+  }
   if (cam.mapped && placement != RefractionMap::EndOfPipeline) {
     // M3 as the user 4x4 of (A5), applied after the projection (it maps
     // normalised device coordinates, x and y over w). The paper zeroes Z
@@ -37,6 +43,15 @@ void SceneGL::setupView(const ViewCamera& cam) {
     gl_.multMatrixf(&m[0][0]);  // column by column, as GL reads it
   }
   gl_.perspective(static_cast<double>(c.fovY), aspect(), static_cast<double>(c.near), static_cast<double>(c.far));
+  if (sample_.lens != DVec2(0.0)) {
+    // Depth of field: the eye moved to the lens point (a, b) in eye space and
+    // the frustum sheared so that the plane at the focal distance f stays
+    // where it was: x' = x - a - a z / f (z = -f: x' = x), y likewise. On the
+    // projection stack, so lighting and fog see the unmoved eye space.
+    const double f = sample_.focalDistance, a = sample_.lens.x, b = sample_.lens.y;
+    const double shear[16] = {1, 0, 0, 0, 0, 1, 0, 0, -a / f, -b / f, 1, 0, -a, -b, 0, 1};
+    gl_.multMatrixd(shear);
+  }
   gl_.matrixMode(GL_MODELVIEW);
   gl_.loadIdentity();
   gl_.lookAt(static_cast<double>(c.position.x), static_cast<double>(c.position.y), static_cast<double>(c.position.z), static_cast<double>(c.lookAt.x), static_cast<double>(c.lookAt.y), static_cast<double>(c.lookAt.z), static_cast<double>(c.up.x), static_cast<double>(c.up.y), static_cast<double>(c.up.z));

@@ -1,6 +1,7 @@
 #pragma once
 // The GL plumbing of the 1994 algorithm: view set-up, lights, materials and
 // geometry, as typed GL calls. Figure 4's routines (draw_window.cpp) call it.
+#include "algorithms/image_samples.hpp"
 #include "algorithms/ref_face.hpp"
 #include "algorithms/view_camera.hpp"
 #include "pipeline/gl_api.hpp"
@@ -16,6 +17,9 @@ class SceneGL {
   // the clip plane is switched off explicitly in views without one.
   SceneGL(const Scene& scene, GLApi& gl, bool usesStencil);
 
+  // The image of an accumulation being drawn: its sub-pixel offset and lens
+  // point move every view's projection (default: none).
+  void setViewSample(const ViewSample& sample) { sample_ = sample; }
   // The view of `cam`: projection (with a refracted view's image map),
   // modelview = lookAt * world, winding, clip plane.
   void setupView(const ViewCamera& cam);
@@ -37,6 +41,7 @@ class SceneGL {
   const Scene& s_;
   GLApi& gl_;
   bool usesStencil_;
+  ViewSample sample_;
 };
 
 }  // namespace mpr

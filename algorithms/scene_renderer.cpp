@@ -1,8 +1,23 @@
 #include "algorithms/scene_renderer.hpp"
 
+#include "algorithms/image_samples.hpp"
 #include "scene/tessellation.hpp"
 
 namespace mpr {
+namespace {
+
+void addCounts(DrawWindowCounts& total, const DrawWindowCounts& c) {
+  total.views += c.views;
+  total.lightPasses += c.lightPasses;
+  total.shadowPasses += c.shadowPasses;
+  total.facesSkipped += c.facesSkipped;
+  total.zfailVolumes += c.zfailVolumes;
+  if (total.viewsAtLevel.size() < c.viewsAtLevel.size()) total.viewsAtLevel.resize(c.viewsAtLevel.size(), 0);
+  for (std::size_t l = 0; l < c.viewsAtLevel.size(); ++l) total.viewsAtLevel[l] += c.viewsAtLevel[l];
+  for (const std::string& w : c.warnings) total.warnings.push_back(w);
+}
+
+}  // namespace
 
 RenderResult renderScene(const Scene& modelled, GLCommandStream& gl,
                          const std::function<void(const RenderProgress&)>& progress, bool cull) {
@@ -16,10 +31,34 @@ RenderResult renderScene(const Scene& modelled, GLCommandStream& gl,
   const Scene& scene = modelled.render.tessellation > 0.0f ? tessellated : modelled;
   RenderResult r;
   r.plan = planRender(scene, cull);
-  const std::uint64_t predicted = r.plan.predictedViews();
-  r.counts = drawScene(scene, r.plan, gl, [&](const DrawWindowProgress& p) {
-    if (progress) progress({p.views, predicted, p.label});
-  });
+  const std::uint64_t predicted = r.plan.predictedViews() * static_cast<std::uint64_t>(r.plan.images);
+  std::uint64_t viewsBefore = 0;
+  const auto report = [&](const DrawWindowProgress& p) {
+    if (progress) progress({viewsBefore + p.views, predicted, p.label});
+  };
+  const int n = r.plan.images;
+  if (n <= 1) {
+    r.counts = drawScene(scene, r.plan, gl, report);
+    return r;
+  }
+  // The accumulation effects (image_samples.hpp): n whole renders, each with
+  // its view and light sample, summed with weight 1/n in the accumulation
+  // buffer and returned to the colour buffer (Haeberli and Akeley 1990; the
+  // 1994 paper's first soft-shadow method).
+  gl.pass("accumulate", "accumulate | clear the accumulation buffer");
+  gl.clearAccum(0.0f, 0.0f, 0.0f, 0.0f);
+  gl.clear(GL_ACCUM_BUFFER_BIT);
+  for (int i = 0; i < n; ++i) {
+    const Scene sampled = lightSampleScene(scene, i, n);
+    addCounts(r.counts, drawScene(sampled, r.plan, gl, report, viewSample(scene, i, n)));
+    viewsBefore = r.counts.views;
+    gl.pass("accumulate", "accumulate | image " + std::to_string(i + 1) + " of " + std::to_string(n) +
+                              ": glAccum(GL_ACCUM, 1/" + std::to_string(n) + ")");
+    gl.accum(GL_ACCUM, 1.0f / static_cast<float>(n));
+  }
+  gl.pass("accumulate", "accumulate | glAccum(GL_RETURN, 1)");
+  gl.accum(GL_RETURN, 1.0f);
+  gl.finish();
   return r;
 }
 

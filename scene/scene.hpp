@@ -17,6 +17,10 @@ struct Camera {
   float fovY = 45.0f;  // degrees, vertical
   float near = 0.1f;
   float far = 100.0f;
+  // Depth of field by accumulation (Haeberli and Akeley 1990): the lens
+  // radius (0: a pinhole) and the distance in focus (0: that of look_at).
+  float aperture = 0.0f;
+  float focalDistance = 0.0f;
 };
 
 struct PointLight {
@@ -78,8 +82,8 @@ struct RenderSettings {
   int width = 640, height = 480;
   int recursionDepth = 2;        // mirror/refraction levels
   int shadowRecursionDepth = 1;
-  int softShadowSamples = 1;
-  int antialiasSamples = 1;
+  int softShadowSamples = 1;   // light samples accumulated (1994's first method: shadowed images)
+  int antialiasSamples = 1;    // jittered images accumulated (and lens samples with an aperture)
   bool shadows = true, reflections = true, refractions = true, translucency = true, frosted = true;
   std::string profile = "indigo";
   RefractionMap refractionMap = RefractionMap::ProjectionKeptZ;

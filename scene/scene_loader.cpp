@@ -37,6 +37,8 @@ const std::vector<KeySpec> kCameraKeys = {
     {"position", "vec3", "eye position"}, {"look_at", "vec3", "point looked at"},
     {"up", "vec3", "up direction, default [0, 1, 0]"}, {"fov", "number (0, 180)", "vertical field of view, degrees"},
     {"near", "number > 0", "near plane distance"}, {"far", "number > near", "far plane distance"},
+    {"aperture", "number >= 0", "lens radius for depth of field (images accumulated: render.antialias_samples), default 0"},
+    {"focal_distance", "number > 0", "distance in focus, default the distance to look_at"},
 };
 const std::vector<KeySpec> kLightKeys = {
     {"position", "vec3", "light position"}, {"color", "rgb", "intensity, default [1, 1, 1]"},
@@ -73,8 +75,11 @@ const std::vector<KeySpec> kRenderKeys = {
     {"width", "integer", "image width, default 640"}, {"height", "integer", "image height, default 480"},
     {"recursion_depth", "integer >= 0", "mirror and refraction levels, default 2"},
     {"shadow_recursion_depth", "integer >= 0", "levels that get shadows, default 1"},
-    {"soft_shadow_samples", "integer >= 1", "light samples accumulated, default 1"},
-    {"antialias_samples", "integer >= 1", "jittered images accumulated, default 1"},
+    {"soft_shadow_samples", "integer >= 1",
+     "light samples of every light with a radius, one shadowed image each, accumulated; default 1"},
+    {"antialias_samples", "integer >= 1", "jittered (and, with camera.aperture, lens) images accumulated, default 1"},
+    {"soft_shadow_method", "images",
+     "how soft shadows are made: images (1994's first method); darkness_levels and pivot are not built"},
     {"shadows", "bool", "default true"}, {"reflections", "bool", "default true"},
     {"refractions", "bool", "default true"}, {"translucency", "bool", "default true"},
     {"frosted", "bool", "default true"}, {"profile", "indigo | mesa", "hardware profile, default indigo"},
@@ -214,6 +219,12 @@ class Loader {
       r.shadowRecursionDepth = integer(n["shadow_recursion_depth"], "render.shadow_recursion_depth", 0, 1 << 20);
     if (n["soft_shadow_samples"]) r.softShadowSamples = integer(n["soft_shadow_samples"], "render.soft_shadow_samples", 1, 1024);
     if (n["antialias_samples"]) r.antialiasSamples = integer(n["antialias_samples"], "render.antialias_samples", 1, 1024);
+    if (n["soft_shadow_method"]) {
+      const std::string m = string(n["soft_shadow_method"], "render.soft_shadow_method");
+      if (m == "darkness_levels" || m == "pivot")
+        fail(n["soft_shadow_method"], "render.soft_shadow_method " + m + " is not built yet (built: images)");
+      if (m != "images") fail(n["soft_shadow_method"], "unknown soft_shadow_method '" + m + "' (known: images)");
+    }
     if (n["shadows"]) r.shadows = boolean(n["shadows"], "render.shadows");
     if (n["reflections"]) r.reflections = boolean(n["reflections"], "render.reflections");
     if (n["refractions"]) r.refractions = boolean(n["refractions"], "render.refractions");
@@ -244,6 +255,9 @@ class Loader {
     if (n["fov"]) c.fovY = static_cast<float>(number(n["fov"], "camera.fov", 0.0, 180.0, true));
     if (n["near"]) c.near = static_cast<float>(number(n["near"], "camera.near", 0.0, 1e30, true));
     if (n["far"]) c.far = static_cast<float>(number(n["far"], "camera.far", 0.0, 1e30, true));
+    if (n["aperture"]) c.aperture = static_cast<float>(number(n["aperture"], "camera.aperture", 0.0, 1e6));
+    if (n["focal_distance"])
+      c.focalDistance = static_cast<float>(number(n["focal_distance"], "camera.focal_distance", 0.0, 1e30, true));
     const YAML::Node at = n["far"] ? n["far"] : n;
     if (!(c.far > c.near)) fail(at, "camera.far must be greater than camera.near");
     if (c.position == c.lookAt) fail(n["look_at"] ? n["look_at"] : n, "camera.look_at must differ from camera.position");

@@ -1,0 +1,81 @@
+#include "algorithms/image_samples.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mpr {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double radicalInverse(int base, int i) {
+  double inv = 1.0 / base, f = inv, r = 0.0;
+  for (int k = i; k > 0; k /= base, f *= inv) r += f * (k % base);
+  return r;
+}
+
+// Shirley and Chiu's concentric map of the unit square onto the unit disc
+// (areas kept: stratified points stay stratified).
+DVec2 concentricDisc(DVec2 u) {
+  const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
+  if (a == 0.0 && b == 0.0) return DVec2(0.0);
+  double r, phi;
+  if (std::abs(a) > std::abs(b)) r = a, phi = kPi / 4.0 * (b / a);
+  else r = b, phi = kPi / 2.0 - kPi / 4.0 * (a / b);
+  return r * DVec2(std::cos(phi), std::sin(phi));
+}
+
+// Point i of n of the unit square, (i + 1/2) / n across, the radical
+// inverse of i in `base` up (its first point, 0, moved to the middle row).
+DVec2 tablePoint(int i, int n, int base) { return DVec2((i + 0.5) / n, std::fmod(radicalInverse(base, i) + 0.5 / n, 1.0)); }
+
+DVec3 sceneCentre(const Scene& s) {
+  DVec3 lo(1e300), hi(-1e300);
+  for (const SceneObject& o : s.objects)
+    for (const Vec3& p : o.mesh.positions) lo = glm::min(lo, DVec3(p)), hi = glm::max(hi, DVec3(p));
+  return lo.x <= hi.x ? 0.5 * (lo + hi) : DVec3(0.0);
+}
+
+bool hasAreaLight(const Scene& s) {
+  return std::any_of(s.lights.begin(), s.lights.end(), [](const PointLight& l) { return l.radius > 0.0f; });
+}
+
+}  // namespace
+
+int accumulatedImages(const Scene& s) {
+  const int lightSamples = hasAreaLight(s) ? s.render.softShadowSamples : 1;
+  return std::max(s.render.antialiasSamples, lightSamples);
+}
+
+ViewSample viewSample(const Scene& s, int i, int n) {
+  ViewSample v;
+  const int a = s.render.antialiasSamples;
+  const Camera& c = s.camera;
+  v.focalDistance = c.focalDistance > 0.0f ? c.focalDistance : glm::length(DVec3(c.lookAt) - DVec3(c.position));
+  if (n <= 1 || a <= 1) return v;
+  const DVec2 u = tablePoint(i % a, a, 2);
+  v.pixelOffset = u - DVec2(0.5);
+  if (c.aperture > 0.0f) v.lens = static_cast<double>(c.aperture) * concentricDisc(u);
+  return v;
+}
+
+Scene lightSampleScene(const Scene& s, int i, int n) {
+  Scene out = s;
+  const int k = s.render.softShadowSamples;
+  if (n <= 1 || k <= 1) return out;
+  const DVec3 centre = sceneCentre(s);
+  const DVec2 d = concentricDisc(tablePoint(i % k, k, 3));
+  for (PointLight& l : out.lights) {
+    if (!(l.radius > 0.0f)) continue;
+    // The disc facing the scene: its axes perpendicular to light -> centre.
+    DVec3 axis = centre - DVec3(l.position);
+    if (glm::dot(axis, axis) == 0.0) axis = DVec3(0.0, -1.0, 0.0);
+    axis = glm::normalize(axis);
+    const DVec3 helper = std::abs(axis.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
+    const DVec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
+    l.position = Vec3(DVec3(l.position) + static_cast<double>(l.radius) * (d.x * u + d.y * v));
+  }
+  return out;
+}
+
+}  // namespace mpr
