@@ -288,9 +288,14 @@ class WindowRenderer {
       gl_.fogf(GL_FOG_END, cam.fogEnd);
       gl_.fogfv(GL_FOG_COLOR, glFloats(c.x, c.y, c.z, 1.0f).data());
     }
+    // "for (each non_ref object)": ref objects are drawn by draw_ref_objects
+    // where this view recurses into them; where it does not (recursion_depth
+    // reached, or 0), they are drawn as their own colour, as the planner says
+    // (the paper is silent; leaving them out left holes of the clear colour).
+    const bool recurses = plan_.reflections && cam.level < plan_.recursionDepth;
     for (const SceneObject& o : s_.objects) {
       const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
-      if (isRefMaterial(m, s_.render)) continue;  // "for (each non_ref object)"
+      if (recurses && isRefMaterial(m, s_.render)) continue;
       gl_scene_.setMaterial(m, !light);
       gl_scene_.drawTriangles(o.mesh);
     }

@@ -171,3 +171,36 @@ TEST(DrawWindowCanonical, StencilAfterEveryStep) {
 
 }  // namespace
 }  // namespace mpr
+
+namespace mpr {
+namespace {
+
+// recursion_depth 0 (and the deepest level of any recursion) does not look
+// through specular faces: they are drawn as their own colour (the planner's
+// note), not left out. A mirror and a glass quad seen head on under ambient
+// light 1 and no lamp: material ambient = diffuse 0.5, so 0.5 * 255 = 127.5,
+// rounded to even: 128 (the clear colour, 0, where they were left out).
+TEST(DrawWindow, FacesNotRecursedIntoAreDrawnAsTheirOwnColour) {
+  const std::string text = R"(
+camera: {position: [0, 0, 4], look_at: [0, 0, 0], fov: 40, near: 0.1, far: 20}
+ambient: [1, 1, 1]
+materials:
+  mirror: {kind: mirror, diffuse: [0.5, 0.5, 0.5], reflectance: 0.9}
+  glass:  {kind: refractive, diffuse: [0.5, 0.5, 0.5], ior: 1.5}
+objects:
+  - {name: mirror, primitive: quad, translate: [-0.6, 0, 0], material: mirror}
+  - {name: glass, primitive: quad, translate: [0.6, 0, 0], material: glass}
+render: {width: 32, height: 24, recursion_depth: 0}
+)";
+  const Scene s = loadSceneText(text, "s.yaml");
+  GLContext gl(32, 24, indigoProfile());
+  GLCommandStream stream(gl, false);
+  renderScene(s, stream);
+  // Window x of world x = +-0.6 at the quads' depth: half-width 4 tan(20 deg)
+  // * 32/24 = 1.941, so 16 -+ 0.6 / 1.941 * 16 = 11.1 and 20.9.
+  EXPECT_EQ(gl.colorAt(11, 12), (Rgba8{128, 128, 128, 255}));
+  EXPECT_EQ(gl.colorAt(20, 12), (Rgba8{128, 128, 128, 255}));
+}
+
+}  // namespace
+}  // namespace mpr
