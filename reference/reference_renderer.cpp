@@ -27,7 +27,7 @@ void renderRow(const TraceContext& c, const CameraRays& camera, int spp, int y, 
     DVec3 sum(0.0);
     for (int i = 0; i < spp; ++i) {
       const DVec2 o = sampler.pixelOffset(static_cast<std::uint32_t>(i));
-      const Ray ray = camera.through(x + o.x, y + o.y);
+      const Ray ray = camera.through(x + o.x, y + o.y, sampler.lensPoint(static_cast<std::uint32_t>(i)));
       ++counts.camera;
       // The near and far planes clip camera rays only (the virtual views'
       // own clipping is part of what the pipeline approximates).

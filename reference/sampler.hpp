@@ -44,7 +44,7 @@ inline void gridOf(std::uint32_t n, std::uint32_t& rows, std::uint32_t& cols) {
 
 // Dimensions of a sample path: the pixel position, then per specular depth
 // its light-disc strata and its frosted-glass perturbation.
-enum : std::uint32_t { kDimPixel = 0, kDimLight = 0x100, kDimFrost = 0x10000, kDimsPerDepth = 0x40 };
+enum : std::uint32_t { kDimPixel = 0, kDimLight = 0x100, kDimFrost = 0x10000, kDimLens = 0x20000, kDimsPerDepth = 0x40 };
 
 struct PixelSampler {
   std::uint32_t x = 0, y = 0, samples = 1;
@@ -76,6 +76,16 @@ struct PixelSampler {
     gridOf(n, rows, cols);
     const std::uint32_t cell = permute(i * perSample + k, n, seed(dim));
     return {(cell % cols + uniform(i, dim + 2 * k)) / cols, (cell / cols + uniform(i, dim + 2 * k + 1)) / rows};
+  }
+
+  // Sample i's point on the lens, in [0, 1)^2: the pixel's samples share one
+  // jittered grid, dealt out by a per-pixel permutation (so the lens and the
+  // pixel position are stratified independently).
+  DVec2 lensPoint(std::uint32_t i) const {
+    std::uint32_t rows, cols;
+    gridOf(samples, rows, cols);
+    const std::uint32_t cell = permute(i, samples, seed(kDimLens));
+    return {(cell % cols + uniform(i, kDimLens)) / cols, (cell / cols + uniform(i, kDimLens + 1)) / rows};
   }
 
   // Two independent standard normal values for sample i (Box-Muller).

@@ -49,7 +49,9 @@ std::vector<VaryKey> defaultSweep() {
           {"render.shadow_recursion_depth", {"0", "1", "2"}},
           {"render.shadows", {"true", "false"}},
           {"render.refraction_map", {"projection", "projection_zeroed_z", "end_of_pipeline"}},
-          {"render.tessellation", {"1", "0.5", "0.25"}}};
+          {"render.tessellation", {"1", "0.5", "0.25"}},
+          {"render.antialias_samples", {"4", "16"}},
+          {"render.soft_shadow_samples", {"4", "16"}}};
 }
 
 std::vector<std::string> SweepSetting::sets() const {
@@ -88,7 +90,8 @@ std::vector<SweepSetting> expandSweep(const std::vector<VaryKey>& keys, bool pro
 
 std::vector<std::string> singlePassSets() {
   return {"render.shadows=false", "render.reflections=false", "render.refractions=false",
-          "render.translucency=false", "render.frosted=false"};
+          "render.translucency=false", "render.frosted=false", "render.antialias_samples=1",
+          "render.soft_shadow_samples=1", "camera.aperture=0"};
 }
 
 std::string sceneFingerprint(const Scene& s) {

@@ -21,8 +21,9 @@ struct VaryKey {
 VaryKey parseVary(const std::string& argument);
 
 // With no --vary: recursion depth 0..3, shadow recursion depth 0..2, shadows
-// on and off, the three placements of the refraction map, and lit faces
-// tessellated to edges of 1, 0.5 and 0.25.
+// on and off, the three placements of the refraction map, lit faces
+// tessellated to edges of 1, 0.5 and 0.25, and 4 and 16 antialias and
+// light samples.
 std::vector<VaryKey> defaultSweep();
 
 // One rendering: the scene with these key=value overrides.
@@ -39,7 +40,8 @@ struct SweepSetting {
 std::vector<SweepSetting> expandSweep(const std::vector<VaryKey>& keys, bool product);
 
 // The single-pass baseline: every multi-pass effect off (no shadow volumes,
-// no mirror or refraction recursion, no translucency or frosted passes).
+// no mirror or refraction recursion, no translucency or frosted passes, one
+// image: no antialiasing, depth of field or soft shadows).
 std::vector<std::string> singlePassSets();
 
 // A description of everything that changes a rendering, so that two
