@@ -22,8 +22,9 @@ BufferSet collect(const std::string& point, const Framebuffer& fb) {
 
 }  // namespace
 
-MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile) {
+MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures) {
   GLContext gl(script.width, script.height, profile);
+  gl.emulateMesaDepartures(departures);
   MprReplay out;
   // Errors are read as the Mesa replayer reads them: after every call outside
   // glBegin/glEnd (glGetError is itself an error inside), so an error raised

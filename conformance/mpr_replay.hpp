@@ -15,6 +15,8 @@ struct MprReplay {
   std::vector<std::string> glErrors;  // "LINE: GL_INVALID_ENUM in glX"
 };
 
-MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile);
+// `departures`: MesaDeparture bits to emulate (pipeline/gl_context.hpp), for
+// telling which differences a known departure of Mesa's explains.
+MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures = 0);
 
 }  // namespace mpr

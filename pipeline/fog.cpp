@@ -9,8 +9,12 @@ float fogFactor(const FogState& fog, float c) {
   float f;
   switch (fog.mode) {
     case FogMode::Linear:
-      if (fog.end == fog.start) return c < fog.end ? 1.0f : 0.0f;
-      f = (fog.end - c) / (fog.end - fog.start);
+      // GL leaves start = end open. Mesa evaluates linear fog as one
+      // multiply-add, c * -1/(end - start) + end/(end - start), and there
+      // takes the first constant as 1 and the second as end * -1
+      // (prog_statevars.c, STATE_FOG_PARAMS_OPTIMIZED): f = c - end, clamped
+      // (measured, fog_linear_start_equals_end.gls).
+      f = fog.end == fog.start ? c - fog.end : (fog.end - c) / (fog.end - fog.start);
       break;
     case FogMode::Exp:
       f = std::exp(-(fog.density * c));

@@ -83,6 +83,7 @@ GLContext::GLContext(int width, int height, const HardwareProfile& profile)
 }
 
 std::array<std::int16_t, 4> GLContext::accumAt(int x, int y) const {
+  settle();
   const std::int16_t* a = fb_.accum(x, y);
   return {a[0], a[1], a[2], a[3]};
 }
@@ -102,6 +103,9 @@ bool GLContext::checkOutsideBeginEnd() {
     setError(GL_INVALID_OPERATION);
     return false;
   }
+  // Every call that may change state closes the open GL_QUADS draw first,
+  // as Mesa's state setters do (FLUSH_VERTICES).
+  flushVertices();
   return true;
 }
 
@@ -265,8 +269,12 @@ void GLContext::depthFunc(GLenumValue func) {
 
 void GLContext::depthRange(double n, double f) {
   if (!checkOutsideBeginEnd()) return;
-  depthNear_ = std::isnan(n) ? 0.0 : std::clamp(n, 0.0, 1.0);
-  depthFar_ = std::isnan(f) ? 0.0 : std::clamp(f, 0.0, 1.0);
+  // Mesa keeps the range in single precision (gl_viewport_attrib), so the
+  // window z scale and offset llvmpipe uses come from the float values:
+  // measured, a range such as [0.99140067, 0.994552] otherwise moves depths
+  // near 1 by a unit (depth_coincident_zfight.gls).
+  depthNear_ = static_cast<float>(std::isnan(n) ? 0.0 : std::clamp(n, 0.0, 1.0));
+  depthFar_ = static_cast<float>(std::isnan(f) ? 0.0 : std::clamp(f, 0.0, 1.0));
 }
 
 void GLContext::blendFunc(GLenumValue src, GLenumValue dst) {
@@ -319,6 +327,12 @@ void GLContext::fogf(GLenumValue pname, float param) {
       if (param < 0.0f) return setError(GL_INVALID_VALUE);
       fog_.density = param;
       return;
+    case GL_FOG_COLOR:
+      if (departures_ & kScalarCallVectorParam) {
+        fog_.color = Vec4(clamp01(param), 0, 0, 0);
+        return;
+      }
+      break;
     case GL_FOG_START: fog_.start = param; return;
     case GL_FOG_END: fog_.end = param; return;
     case GL_FOG_INDEX: return;  // colour-index mode only
@@ -343,7 +357,7 @@ void GLContext::hint(GLenumValue target, GLenumValue mode) {
   switch (target) {
     case GL_FOG_HINT:
       // GL_FASTEST: fog per vertex; otherwise per fragment, as Mesa does.
-      fog_.perFragment = mode != GL_FASTEST;
+      fog_.perFragment = mode != GL_FASTEST || (departures_ & kFogHintIgnored);
       return;
     case GL_PERSPECTIVE_CORRECTION_HINT:
     case GL_POINT_SMOOTH_HINT:

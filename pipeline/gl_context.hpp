@@ -31,6 +31,17 @@ using GLenumValue = std::uint32_t;
 
 struct LlvmpipeDepth;  // llvmpipe's depth planes for one triangle (gl_context_draw.cpp)
 
+// Where Mesa 22.3 departs from GL 1.1 the emulated Iris follows GL 1.1; `mpr
+// conform` replays a script once more with a departure emulated to tell
+// which differences it explains (README, "Known Mesa departures"). Never set
+// by a renderer.
+enum MesaDeparture : unsigned {
+  kColor3KeepsAlpha = 1u << 0,         // glColor3 keeps the alpha of an earlier glColor4 (color3_alpha.gls)
+  kLightingUndividedEye = 1u << 1,     // vertices lit at the undivided eye xyz when w != 1 (lighting_vertex_w.gls)
+  kFogHintIgnored = 1u << 2,           // GL_FOG_HINT GL_FASTEST fogs per fragment too (fog_hint_fastest.gls)
+  kScalarCallVectorParam = 1u << 3,    // glFogf/glLightf/glMaterialf/glLightModelf take a vector pname as (v,0,0,0)
+};
+
 // Counters a renderer reports with --stats and a benchmark divides by time.
 struct PipelineCounters {
   std::uint64_t triangles = 0;        // after primitive assembly
@@ -52,14 +63,18 @@ class GLContext {
  public:
   GLContext(int width, int height, const HardwareProfile& profile);
 
-  Framebuffer& framebuffer() { return fb_; }
-  const Framebuffer& framebuffer() const { return fb_; }
-  const PipelineCounters& counters() const { return counters_; }
+  // Readers see every call drawn: a GL_QUADS draw still open for merging
+  // (see OpenQuadDraw) is closed first, as glReadPixels flushes in GL.
+  Framebuffer& framebuffer() { settle(); return fb_; }
+  const Framebuffer& framebuffer() const { settle(); return fb_; }
+  const PipelineCounters& counters() const { settle(); return counters_; }
+  // Closes the open GL_QUADS draw now (what Mesa's FLUSH_VERTICES does).
+  void flushVertices();
 
   // --- per-pixel inspection for tests -----------------------------------
-  std::uint32_t stencilAt(int x, int y) const { return fb_.stencil(x, y); }
-  std::uint32_t depthAt(int x, int y) const { return fb_.depth(x, y); }
-  Rgba8 colorAt(int x, int y) const { return fb_.color(x, y); }
+  std::uint32_t stencilAt(int x, int y) const { settle(); return fb_.stencil(x, y); }
+  std::uint32_t depthAt(int x, int y) const { settle(); return fb_.depth(x, y); }
+  Rgba8 colorAt(int x, int y) const { settle(); return fb_.color(x, y); }
   std::array<std::int16_t, 4> accumAt(int x, int y) const;
 
   // --- errors -------------------------------------------------------------
@@ -76,8 +91,8 @@ class GLContext {
   void colorMask(bool r, bool g, bool b, bool a);
   void depthMask(bool flag);
   void stencilMask(std::uint32_t mask);
-  void finish() {}
-  void flush() {}
+  void finish() { flushVertices(); }
+  void flush() { flushVertices(); }
 
   // --- per-fragment state ---------------------------------------------------
   void enable(GLenumValue cap) { setCapability(cap, true); }
@@ -125,6 +140,7 @@ class GLContext {
   void materialf(GLenumValue face, GLenumValue pname, float param);
   void materialfv(GLenumValue face, GLenumValue pname, const float* params, int count);
   void colorMaterial(GLenumValue face, GLenumValue mode);
+  void color3f(float r, float g, float b);  // alpha 1 (GL 1.1 section 2.7)
   void color4f(float r, float g, float b, float a);
   void color4ub(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a);
   void normal3f(float x, float y, float z);
@@ -159,8 +175,14 @@ class GLContext {
   // viewport; depth is kept. See windowMap semantics in gl_context_draw.cpp.
   // Not part of the GL state (no glGet, not saved by glPush/Pop): a stage of
   // the emulated hardware that a renderer switches on and off.
-  void setWindowMap(const std::optional<glm::mat3>& map) { windowMap_ = map; }
+  void setWindowMap(const std::optional<glm::mat3>& map) {
+    flushVertices();
+    windowMap_ = map;
+  }
   const std::optional<glm::mat3>& windowMap() const { return windowMap_; }
+
+  // Emulates the given MesaDeparture bits (for `mpr conform` only).
+  void emulateMesaDepartures(unsigned departures) { departures_ = departures; }
 
   // Observes every fragment that reaches the per-fragment tests; costs nothing
   // when unset.
@@ -171,6 +193,20 @@ class GLContext {
     Vec4 object;
     Vec4 color;
     Vec3 normal;
+    std::uint32_t material;  // index into blockMaterials_: the materials in force at this vertex
+  };
+
+  // The GL_QUADS draw Mesa's vbo is building: consecutive glBegin(GL_QUADS)
+  // blocks with nothing but vertex attributes between them become one draw,
+  // and when any vertex of that draw lies outside a clip plane, the draw
+  // module splits all its quads (0, 1, 3) (1, 2, 3). Until a vertex outside
+  // is seen, the quads wait here (drawn (0, 1, 2) (0, 2, 3) when the draw is
+  // closed); once one is seen, every quad of the draw is drawn at its glEnd.
+  struct OpenQuadDraw {
+    bool open = false;
+    bool clipped = false;              // a vertex of the draw lies outside a plane
+    std::size_t vertexCount = 0;       // in the whole draw so far
+    std::vector<ClipVertex> waiting;   // processed, not yet drawn (only while !clipped)
   };
 
   void setError(GLenumValue e);
@@ -180,6 +216,8 @@ class GLContext {
   void afterMatrixChange();
   void applyColorMaterial();
   ClipVertex processVertex(const Vertex& v) const;
+  void drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal);
+  void settle() const;  // closes the open quad draw (a reader or a state change sees it drawn)
   void drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
   void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                 const LlvmpipeDepth& depth);
@@ -226,11 +264,15 @@ class GLContext {
   bool inBegin_ = false;
   PrimitiveType primitive_ = PrimitiveType::Triangles;
   std::vector<Vertex> vertices_;
+  std::vector<std::array<Material, 2>> blockMaterials_;  // glMaterial inside glBegin/glEnd (GL 1.1 section 2.6.3)
+  bool blockMaterialUsed_ = false;                       // a vertex refers to blockMaterials_.back()
+  OpenQuadDraw quadDraw_;
   // per-draw derived state, computed at glEnd
   Mat4 mvp_;
   glm::mat3 normalMatrix_;
   std::vector<ClipPlane> clipPlanesClip_;
   std::optional<glm::mat3> windowMap_;
+  unsigned departures_ = 0;  // MesaDeparture bits
 };
 
 }  // namespace mpr

@@ -241,17 +241,38 @@ void GLContext::begin(GLenumValue mode) {
     case GL_POLYGON: primitive_ = PrimitiveType::Polygon; break;
     default: return setError(GL_INVALID_ENUM);
   }
+  // Only another GL_QUADS block can join the open quad draw.
+  if (primitive_ != PrimitiveType::Quads) flushVertices();
   inBegin_ = true;
   vertices_.clear();
+  blockMaterials_.assign(1, lighting_.material);
+  blockMaterialUsed_ = false;
 }
 
 void GLContext::vertex4f(float x, float y, float z, float w) {
   if (!inBegin_) return;  // outside glBegin/glEnd GL leaves the result undefined; ignore
-  vertices_.push_back({Vec4(x, y, z, w), currentColor_, currentNormal_});
+  vertices_.push_back({Vec4(x, y, z, w), currentColor_, currentNormal_,
+                       static_cast<std::uint32_t>(blockMaterials_.size() - 1)});
+  blockMaterialUsed_ = true;
+}
+
+void GLContext::settle() const {
+  // The context is never const in storage; a reader through a const
+  // reference expects what GL would show after a flush.
+  if (quadDraw_.open) const_cast<GLContext*>(this)->flushVertices();
+}
+
+void GLContext::flushVertices() {
+  if (!quadDraw_.open) return;
+  quadDraw_.open = false;
+  std::vector<ClipVertex> waiting;
+  waiting.swap(quadDraw_.waiting);
+  if (!quadDraw_.clipped && !waiting.empty()) drawProcessed(PrimitiveType::Quads, waiting, false);
 }
 
 void GLContext::rectf(float x1, float y1, float x2, float y2) {
-  if (!checkOutsideBeginEnd()) return;
+  // A glBegin(GL_QUADS) block of its own (it may join the open quad draw).
+  if (inBegin_) return setError(GL_INVALID_OPERATION);
   // GL 1.1 section 2.9 describes glBegin(GL_POLYGON) with these four
   // vertices; Mesa (main/draw.c _mesa_Rectf) issues GL_QUADS, which covers
   // the same pixels but is set up as triangles (0, 1, 2), (0, 2, 3) rather
@@ -280,6 +301,7 @@ ClipVertex GLContext::processVertex(const Vertex& v) const {
   Vec4 front, back;
   if (lightingEnabled_) {
     LightingState s = lighting_;
+    s.material = blockMaterials_[v.material];
     if (colorMaterialEnabled_) {
       // The vertex's own colour feeds the tracked material parameter.
       const Vec4 c = v.color;
@@ -301,8 +323,9 @@ ClipVertex GLContext::processVertex(const Vertex& v) const {
       const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
       if (len > 0.0f) n = n / len;
     }
-    front = lightVertex(s, eye, n, false);
-    back = lighting_.model.twoSide ? lightVertex(s, eye, n, true) : front;
+    const Vec4 lit = (departures_ & kLightingUndividedEye) ? Vec4(Vec3(eye), 1.0f) : eye;
+    front = lightVertex(s, lit, n, false);
+    back = lighting_.model.twoSide ? lightVertex(s, lit, n, true) : front;
   } else {
     front = back = clampColor(v.color);
   }
@@ -340,22 +363,49 @@ void GLContext::end() {
     clipPlanesClip_[5] = q - v;
   }
 
-  const std::vector<AssembledTriangle> tris = assembleTriangles(primitive_, static_cast<std::uint32_t>(vertices_.size()));
-  if (tris.empty()) return;
   std::vector<ClipVertex> processed;
   processed.reserve(vertices_.size());
   for (const Vertex& v : vertices_) processed.push_back(processVertex(v));
+  if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
 
-  // The triangles llvmpipe sets up are MPR's, except for quads when Mesa's
-  // draw module runs its pipeline, which it does when any vertex of the draw
-  // lies outside a clip plane: then draw_decompose_tmp.h splits each quad
-  // along the other diagonal, (0, 1, 3) and (1, 2, 3), where the plain path
-  // (lp_setup_vbuf.c) draws (0, 1, 2) and (0, 2, 3) as MPR does. (Mesa merges
-  // consecutive glBegin(GL_QUADS) blocks into one draw; this looks at one.)
+  // llvmpipe draws quads as MPR does, (0, 1, 2) and (0, 2, 3), except when
+  // Mesa's draw module runs its pipeline, which it does when any vertex of
+  // the draw lies outside a clip plane: then draw_decompose_tmp.h splits each
+  // quad along the other diagonal, (0, 1, 3) and (1, 2, 3), and that split
+  // decides coverage, colour and depth. A draw is every GL_QUADS block since
+  // the last state change (Mesa's vbo merges them while the earlier count is
+  // a multiple of 4; vbo_merge_draws), so the split of a block can depend on
+  // a later one: blocks wait in quadDraw_ until the draw is known to clip or
+  // is closed.
   const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
   bool anyOutside = false;
   for (const ClipVertex& cv : processed) anyOutside = anyOutside || drawClipMask(cv.clip, userPlanes) != 0;
-  const bool quadsOtherDiagonal = primitive_ == PrimitiveType::Quads && anyOutside;
+  if (!quadDraw_.open || quadDraw_.vertexCount % 4 != 0) {
+    flushVertices();
+    quadDraw_ = OpenQuadDraw{true, false, 0, {}};
+  }
+  quadDraw_.vertexCount += processed.size();
+  if (quadDraw_.clipped) return drawProcessed(PrimitiveType::Quads, processed, true);
+  if (anyOutside) {
+    quadDraw_.clipped = true;
+    std::vector<ClipVertex> waiting;
+    waiting.swap(quadDraw_.waiting);
+    if (!waiting.empty()) drawProcessed(PrimitiveType::Quads, waiting, true);
+    return drawProcessed(PrimitiveType::Quads, processed, true);
+  }
+  quadDraw_.waiting.insert(quadDraw_.waiting.end(), processed.begin(), processed.end());
+}
+
+void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal) {
+  std::vector<AssembledTriangle> tris = assembleTriangles(type, static_cast<std::uint32_t>(processed.size()));
+  if (tris.empty()) return;
+  if (quadsOtherDiagonal)
+    for (std::size_t k = 0; k < tris.size(); k += 2) {
+      const std::uint32_t q = tris[k].v[0];  // MPR's quad triangles both start at the quad's first vertex
+      tris[k] = {{q, q + 1, q + 3}, q + 3};
+      tris[k + 1] = {{q + 1, q + 2, q + 3}, q + 3};
+    }
+  const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
   const WindowTransform window{vpScaleX_, vpTransX_, vpScaleY_, vpTransY_,
                                static_cast<float>((depthFar_ - depthNear_) / 2.0),
                                static_cast<float>((depthNear_ + depthFar_) / 2.0), fb_.height()};
@@ -366,16 +416,9 @@ void GLContext::end() {
       for (ClipVertex& cv : tri)
         for (int i = 0; i < 8; ++i) cv.attr[i] = processed[t.provoking].attr[i];
     LlvmpipeDepth depth{window, &userPlanes, {}};
-    if (windowMap_) {
-      // The end-of-pipeline stage interpolates depth itself (only the
-      // window transform is used): no llvmpipe planes to set up.
-    } else if (quadsOtherDiagonal) {
-      const std::uint32_t q = t.v[0];  // MPR's quad triangles both start at the quad's first vertex
-      depth.add(processed[q].clip, processed[q + 1].clip, processed[q + 3].clip);
-      depth.add(processed[q + 1].clip, processed[q + 2].clip, processed[q + 3].clip);
-    } else {
-      depth.add(tri[0].clip, tri[1].clip, tri[2].clip);
-    }
+    // The end-of-pipeline stage interpolates depth itself (only the window
+    // transform is used): no llvmpipe planes to set up.
+    if (!windowMap_) depth.add(tri[0].clip, tri[1].clip, tri[2].clip);
     drawTriangle(tri, depth);
   }
 }

@@ -23,6 +23,10 @@ int expectedCount(GLenumValue pname) {
 }  // namespace
 
 void GLContext::lightf(GLenumValue light, GLenumValue pname, float param) {
+  if (expectedCount(pname) != 1 && (departures_ & kScalarCallVectorParam)) {
+    const float v[4] = {param, 0, 0, 0};
+    return lightfv(light, pname, v, 4);
+  }
   if (expectedCount(pname) != 1) {
     // glLightf only takes the scalar parameters.
     if (!checkOutsideBeginEnd()) return;
@@ -65,6 +69,10 @@ void GLContext::lightfv(GLenumValue light, GLenumValue pname, const float* p, in
 }
 
 void GLContext::lightModelf(GLenumValue pname, float param) {
+  if (pname == GL_LIGHT_MODEL_AMBIENT && (departures_ & kScalarCallVectorParam)) {
+    const float v[4] = {param, 0, 0, 0};
+    return lightModelfv(pname, v, 4);
+  }
   if (pname == GL_LIGHT_MODEL_AMBIENT) {
     if (!checkOutsideBeginEnd()) return;
     return setError(GL_INVALID_ENUM);
@@ -85,6 +93,10 @@ void GLContext::lightModelfv(GLenumValue pname, const float* p, int count) {
 }
 
 void GLContext::materialf(GLenumValue face, GLenumValue pname, float param) {
+  if (pname != GL_SHININESS && expectedCount(pname) == 4 && (departures_ & kScalarCallVectorParam)) {
+    const float v[4] = {param, 0, 0, 0};
+    return materialfv(face, pname, v, 4);
+  }
   if (pname != GL_SHININESS) {
     if (!checkOutsideBeginEnd()) return;  // (materials are legal inside glBegin)
     return setError(GL_INVALID_ENUM);
@@ -112,6 +124,14 @@ void GLContext::materialfv(GLenumValue face, GLenumValue pname, const float* p, 
       default: return setError(GL_INVALID_ENUM);
     }
   }
+  // Inside glBegin/glEnd the change applies to the vertices that follow
+  // (GL 1.1 section 2.6.3): the block keeps each set of materials a vertex
+  // was given with.
+  if (inBegin_) {
+    if (blockMaterialUsed_) blockMaterials_.push_back(lighting_.material);
+    else blockMaterials_.back() = lighting_.material;
+    blockMaterialUsed_ = false;
+  }
 }
 
 void GLContext::colorMaterial(GLenumValue face, GLenumValue mode) {
@@ -132,6 +152,10 @@ void GLContext::applyColorMaterial() {
   const bool wasInBegin = inBegin_;
   materialfv(colorMaterialFace_, colorMaterialMode_, c, 4);
   inBegin_ = wasInBegin;
+}
+
+void GLContext::color3f(float r, float g, float b) {
+  color4f(r, g, b, (departures_ & kColor3KeepsAlpha) ? currentColor_.a : 1.0f);
 }
 
 void GLContext::color4f(float r, float g, float b, float a) {

@@ -83,9 +83,9 @@ class GLEmulator final : public GLApi {
     gl_.materialfv(face, pname, params, 16);
   }
   void colorMaterial(GLenum face, GLenum mode) override { gl_.colorMaterial(face, mode); }
-  void color3f(GLfloat r, GLfloat g, GLfloat b) override { gl_.color4f(r, g, b, 1.0f); }
+  void color3f(GLfloat r, GLfloat g, GLfloat b) override { gl_.color3f(r, g, b); }
   void color4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) override { gl_.color4f(r, g, b, a); }
-  void color3ub(GLubyte r, GLubyte g, GLubyte b) override { gl_.color4ub(r, g, b, 255); }
+  void color3ub(GLubyte r, GLubyte g, GLubyte b) override { gl_.color3f(r / 255.0f, g / 255.0f, b / 255.0f); }
   void color4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) override { gl_.color4ub(r, g, b, a); }
   void normal3f(GLfloat x, GLfloat y, GLfloat z) override { gl_.normal3f(x, y, z); }
   void begin(GLenum mode) override { gl_.begin(mode); }

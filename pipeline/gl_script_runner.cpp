@@ -13,6 +13,26 @@ std::string glErrorReport(const ScriptCommand& c, std::uint32_t error) {
   return std::to_string(c.line) + ": " + std::string(glErrorName(error)) + " in " + std::string(glCallName(c.call));
 }
 
+namespace {
+// Calls that may join the open GL_QUADS draw (GLContext::flushVertices):
+// vertex attributes, glEnd, and further GL_QUADS blocks. Before any other
+// command the runner closes that draw, so that its fragments belong to the
+// call, pass and snapshot that made them.
+bool mayJoinQuadDraw(const ScriptCommand& c) {
+  if (c.kind != ScriptCommand::Kind::Call) return false;
+  switch (c.call) {
+    case GLCall::Begin: return !c.args.empty() && c.args[0].bits == GL_QUADS;
+    case GLCall::Color3f: case GLCall::Color4f: case GLCall::Color3ub: case GLCall::Color4ub:
+    case GLCall::Normal3f: case GLCall::Materialf: case GLCall::Materialfv:
+    case GLCall::Vertex2f: case GLCall::Vertex3f: case GLCall::Vertex4f:
+    case GLCall::End: case GLCall::Rectf:
+      return true;
+    default:
+      return false;
+  }
+}
+}  // namespace
+
 void executeCall(GLContext& gl, const ScriptCommand& cmd) {
   GLEmulator emulator(gl);
   dispatch(emulator, cmd);
@@ -22,6 +42,7 @@ std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& ho
   std::size_t errors = 0;
   GLEmulator emulator(gl);
   for (const ScriptCommand& cmd : script.commands) {
+    if (!mayJoinQuadDraw(cmd)) gl.flushVertices();
     switch (cmd.kind) {
       case ScriptCommand::Kind::WindowMap:
       case ScriptCommand::Kind::FragmentCount:
@@ -45,6 +66,7 @@ std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& ho
       }
     }
   }
+  gl.flushVertices();
   return errors;
 }
 

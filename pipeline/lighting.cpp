@@ -48,12 +48,24 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
       term += nDotL * Vec3(m.diffuse) * Vec3(l.diffuse);
       const Vec3 toEye = s.model.localViewer ? normalized(-v) : Vec3(0.0f, 0.0f, 1.0f);
       const float nDotH = dot3(n, normalized(toLight + toEye));
-      if (nDotH > 0.0f) term += std::pow(nDotH, m.shininess) * Vec3(m.specular) * Vec3(l.specular);
+      // max(N.H, 0)^shininess; GL leaves 0^0 open and llvmpipe takes it as 1
+      // (shininess 0, the default, with N.H <= 0: full specular).
+      const float specular = nDotH > 0.0f ? std::pow(nDotH, m.shininess) : (m.shininess == 0.0f ? 1.0f : 0.0f);
+      if (specular != 0.0f) {
+        // An overflowed power times a zero colour (0 x infinity) is NaN;
+        // llvmpipe draws such a vertex as if the term were 0 (measured,
+        // lighting_nonfinite.gls: the diffuse term alone decides).
+        const Vec3 s = specular * Vec3(m.specular) * Vec3(l.specular);
+        term += Vec3(std::isnan(s.x) ? 0.0f : s.x, std::isnan(s.y) ? 0.0f : s.y, std::isnan(s.z) ? 0.0f : s.z);
+      }
     }
     c += scale * term;
   }
-  const Vec3 rgb = glm::clamp(c, Vec3(0.0f), Vec3(1.0f));
-  return Vec4(rgb, std::clamp(m.diffuse.a, 0.0f, 1.0f));
+  // A colour that overflowed (an unnormalised normal to a high power, 0 x
+  // infinity) is clamped as llvmpipe clamps it, NaN to 0, and drawn: GL
+  // leaves non-finite results open.
+  auto clamp01 = [](float v) { return std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f); };
+  return Vec4(clamp01(c.r), clamp01(c.g), clamp01(c.b), clamp01(m.diffuse.a));
 }
 
 }  // namespace mpr

@@ -105,9 +105,10 @@ TEST(Fog, LinearFactors) {
   EXPECT_EQ(fogFactor(f, 6.0f), 0.5f);
   EXPECT_EQ(fogFactor(f, 12.0f), 0.0f);  // clamped
   EXPECT_EQ(fogFactor(f, 0.0f), 1.0f);   // clamped
-  f.end = f.start;                       // degenerate range: a step
-  EXPECT_EQ(fogFactor(f, 1.0f), 1.0f);
-  EXPECT_EQ(fogFactor(f, 3.0f), 0.0f);
+  f.end = f.start;  // start = end, which GL leaves open: llvmpipe's clamp(c - end), not a step
+  EXPECT_EQ(fogFactor(f, 1.0f), 0.0f);
+  EXPECT_EQ(fogFactor(f, 2.5f), 0.5f);
+  EXPECT_EQ(fogFactor(f, 3.0f), 1.0f);
 }
 
 TEST(Fog, ExponentialFactors) {
