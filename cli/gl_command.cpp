@@ -13,6 +13,7 @@
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/gl_script.hpp"
 #include "pipeline/gl_script_runner.hpp"
+#include "pipeline/script_probe.hpp"
 
 namespace mpr::cli {
 namespace {
@@ -60,7 +61,22 @@ int runGl(const GlOptions& o) {
       for (NamedBytes& nb : framebufferNpyDumps(ctx.framebuffer()))
         files.push_back({c.label + "-" + nb.name + ".npy", std::move(nb.bytes)});
     };
-  const std::size_t errors = runScript(script, *gl, hooks);
+  // A probe that does not hold ends the run (exit status 1, nothing written).
+  struct ProbeFailed {};
+  std::size_t probes = 0;
+  hooks.onProbe = [&](const ScriptCommand& c, const GLContext& ctx) {
+    ++probes;
+    const ProbeOutcome p = evaluateProbe(*c.probe, ctx.framebuffer());
+    if (p.passed) return;
+    std::cerr << script.file << ":" << c.line << ": " << c.label << ": " << p.message << "\n";
+    throw ProbeFailed{};
+  };
+  std::size_t errors = 0;
+  try {
+    errors = runScript(script, *gl, hooks);
+  } catch (const ProbeFailed&) {
+    return 1;
+  }
 
   if (!o.dumpDir.empty()) {
     try {
@@ -78,7 +94,8 @@ int runGl(const GlOptions& o) {
     const PipelineCounters& c = gl->counters();
     std::cout << script.file << ": " << script.callCount() << " calls, " << passes << " passes, "
               << c.triangles << " triangles, " << c.fragmentsTested << " fragments tested, "
-              << c.fragmentsWritten << " written, " << errors << " GL errors (" << profile->name << ", "
+              << c.fragmentsWritten << " written, " << errors << " GL errors"
+              << (probes ? ", " + std::to_string(probes) + " probes held" : "") << " (" << profile->name << ", "
               << script.width << "x" << script.height << ")\n";
   }
   return 0;

@@ -9,6 +9,7 @@
 #include "cli/reference_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/step_command.hpp"
+#include "cli/test_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
   mpr::cli::addConformCommand(app, exitCode);
   mpr::cli::addRenderCommand(app, exitCode);
   mpr::cli::addStepCommand(app, exitCode);
+  mpr::cli::addTestCommand(app, exitCode);
   mpr::cli::addInfoCommand(app, exitCode);
   mpr::cli::addReferenceCommand(app, exitCode);
   mpr::cli::addAccuracyCommand(app, exitCode);

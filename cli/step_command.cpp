@@ -10,11 +10,11 @@
 
 #include "algorithms/gl_command_stream.hpp"
 #include "algorithms/scene_renderer.hpp"
-#include "cli/script_passes.hpp"
+#include "stepper/script_passes.hpp"
 #include "cli/step_page.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "stepper/gl_state_json.hpp"
-#include "stepper/pixel_event_recorder.hpp"
+#include "stepper/pixel_history.hpp"
 #include "stepper/pixel_history_text.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -82,44 +82,27 @@ int runStep(const StepOptions& o) {
     return 2;
   }
   GLContext gl(script.width, script.height, *profile);
-
-  // The pixel's history: each pass's header before its first line.
-  std::ostringstream history;
-  int headerPass = -1;
-  std::optional<PixelEventRecorder> recorder;
-  if (px >= 0)
-    recorder.emplace(gl, PixelRect{px, py, px + 1, py + 1}, [&](const PixelEvent& e, const FragmentState& s) {
-      if (e.pass != headerPass) {
-        history << passHeaderLine(e.pass, passes[static_cast<std::size_t>(e.pass)].label) << "\n";
-        headerPass = e.pass;
-      }
-      history << pixelEventLine(e, s) << "\n";
-    });
+  if (px >= 0) {
+    const std::string history = recordPixelHistory(script, gl, px, py);
+    std::cout << "pixel (" << px << "," << py << ") of " << script.file << "\n"
+              << history << "final: "
+              << pixelValueText(gl.stencilAt(px, py), profile->stencilBits, gl.depthAt(px, py), gl.colorAt(px, py))
+              << "\n";
+    return 0;
+  }
 
   int pass = 0;
   std::optional<std::string> stateAtEnd;
   ScriptHooks hooks;
-  hooks.beforeCall = [&](const ScriptCommand& c) {
-    if (recorder) recorder->beforeCall(c);
-  };
   hooks.onPass = [&](const ScriptCommand&) {
-    if (recorder) recorder->startPass();
     if (pass == o.state) stateAtEnd = glStateJson(gl);
     ++pass;
   };
   runScript(script, gl, hooks);
-  if (recorder) recorder->finish();
   if (pass == o.state) stateAtEnd = glStateJson(gl);
 
   if (o.state >= 0) {
     std::cout << *stateAtEnd;
-    return 0;
-  }
-  if (px >= 0) {
-    std::cout << "pixel (" << px << "," << py << ") of " << script.file << "\n"
-              << history.str() << "final: "
-              << pixelValueText(gl.stencilAt(px, py), profile->stencilBits, gl.depthAt(px, py), gl.colorAt(px, py))
-              << "\n";
     return 0;
   }
   for (std::size_t i = 0; i < passes.size(); ++i)

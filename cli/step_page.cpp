@@ -11,7 +11,7 @@
 #include "cli/page_encoding.hpp"
 #include "cli/page_folder.hpp"
 #include "cli/pixel_history_encoder.hpp"
-#include "cli/script_passes.hpp"
+#include "stepper/script_passes.hpp"
 #include "cli/web_assets.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "stepper/gl_state_json.hpp"

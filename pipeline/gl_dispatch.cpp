@@ -63,6 +63,9 @@ void invoke(GLApi& api, void (GLApi::*fn)(P...), const ScriptCommand& cmd) {
 void dispatch(GLApi& api, const ScriptCommand& cmd) {
   switch (cmd.kind) {
     case ScriptCommand::Kind::Snapshot: return;
+    // A probe reads the buffers and changes nothing: not a call of the API
+    // (a replay on Mesa, or into a trace, passes over it).
+    case ScriptCommand::Kind::Probe: return;
     case ScriptCommand::Kind::Pass: return api.pass(cmd.label);
     case ScriptCommand::Kind::WindowMap: {
       if (cmd.args.empty()) return api.windowMap(std::nullopt);

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -188,8 +189,11 @@ class Parser {
     Script script;
     script.file = file_;
     script.text = std::string(text);
-    bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false;
+    bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false, inBegin = false;
     std::set<std::string> snapshots;
+    // Probes are checked against the window once the whole script is read.
+    std::vector<PendingProbe> probes;
+    std::optional<PendingProbe> picture;  // an @expect-picture awaiting its @end
     int lineNo = 0;
     size_t pos = 0;
     while (pos <= text.size()) {
@@ -205,6 +209,33 @@ class Parser {
         continue;
       }
       const Token& head = toks[0];
+      if (picture) {
+        if (head.text == "@end") {
+          if (toks.size() != 1) fail(lineNo, toks[1].column, "@end takes nothing");
+          if (picture->probe->cells.empty()) fail(lineNo, head.column, "@expect-picture has no rows before @end");
+          finishPicture(*picture);
+          probes.push_back(std::move(*picture));
+          picture.reset();
+        } else {
+          addPictureRow(*picture, toks, lineNo);
+        }
+        continue;
+      }
+      if (head.text == "@expect" || head.text == "@expect-picture") {
+        if (inBegin) fail(lineNo, head.column, std::string(head.text) + " between glBegin and glEnd");
+        PendingProbe pp = head.text == "@expect" ? parseExpect(toks, lineNo) : parseExpectPicture(toks, lineNo);
+        pp.command = script.commands.size();
+        ScriptCommand cmd;
+        cmd.kind = ScriptCommand::Kind::Probe;
+        cmd.line = lineNo;
+        cmd.label = std::string(line.substr(static_cast<size_t>(head.column - 1),
+                                            static_cast<size_t>(toks.back().column - head.column) + toks.back().text.size()));
+        script.commands.push_back(std::move(cmd));
+        if (head.text == "@expect") probes.push_back(std::move(pp));
+        else picture = std::move(pp);
+        continue;
+      }
+      if (head.text == "@end") fail(lineNo, head.column, "@end without @expect-picture");
       if (head.text[0] == '@') {
         ScriptCommand cmd;
         cmd.line = lineNo;
@@ -287,7 +318,7 @@ class Parser {
         }
         fail(lineNo, head.column, "unknown directive '" + std::string(head.text) +
                                       "' (known: @framebuffer, @profile, @pass, @snapshot, @window_map, "
-                                      "@count_fragments)");
+                                      "@count_fragments, @expect, @expect-picture)");
       }
 
       const CallSpec* spec = findCall(head.text);
@@ -335,9 +366,166 @@ class Parser {
         }
       }
       checkSubset(*spec, cmd, lineNo);
+      if (cmd.call == GLCall::Begin) inBegin = true;
+      if (cmd.call == GLCall::End) inBegin = false;
       script.commands.push_back(std::move(cmd));
     }
+    if (picture) fail(picture->line, picture->column, "@expect-picture without @end");
+    for (PendingProbe& pp : probes) {
+      placeProbe(pp, script.width, script.height);
+      script.commands[pp.command].probe = std::move(pp.probe);
+    }
     return script;
+  }
+
+  // A probe while parsing: where its coordinates were written, to report a
+  // pixel outside the window at them once @framebuffer is known.
+  struct PendingProbe {
+    std::shared_ptr<ScriptProbe> probe;
+    std::size_t command = 0;
+    int line = 0, column = 0;  // the directive
+    int xColumn = 0;           // its X (0 for all)
+  };
+
+  long long integerArg(const std::vector<Token>& toks, std::size_t i, int line, const std::string& what,
+                       long long lo, long long hi) const {
+    const auto n = parseInteger(toks[i].text);
+    if (!n) fail(line, toks[i].column, what + " must be an integer, not '" + std::string(toks[i].text) + "'");
+    if (*n < lo || *n > hi)
+      fail(line, toks[i].column, what + " " + std::string(toks[i].text) + " is outside " + std::to_string(lo) + ".." +
+                                     std::to_string(hi));
+    return *n;
+  }
+
+  // @expect BUFFER X Y VALUE... | BUFFER all VALUE... | BUFFER rect X Y W H VALUE...
+  PendingProbe parseExpect(const std::vector<Token>& toks, int line) const {
+    PendingProbe pp{std::make_shared<ScriptProbe>(), 0, line, toks[0].column, 0};
+    ScriptProbe& p = *pp.probe;
+    static constexpr std::string_view kUsage =
+        "@expect takes stencil|depth|color|accum, then X Y, all, or rect X Y W H, then the value";
+    if (toks.size() < 2) fail(line, toks[0].column, std::string(kUsage));
+    const std::string_view buffer = toks[1].text;
+    std::size_t values = 1;
+    long long lo = 0, hi = 255;
+    if (buffer == "stencil") {
+      p.buffer = ScriptProbe::Buffer::Stencil;
+    } else if (buffer == "depth") {
+      p.buffer = ScriptProbe::Buffer::Depth;
+      hi = (1 << 24) - 1;
+    } else if (buffer == "color") {
+      p.buffer = ScriptProbe::Buffer::Color;
+      values = 4;
+    } else if (buffer == "accum") {
+      p.buffer = ScriptProbe::Buffer::Accum;
+      values = 4;
+      lo = -32768;
+      hi = 32767;
+    } else {
+      fail(line, toks[1].column, "unknown buffer '" + std::string(buffer) + "' (known: stencil, depth, color, accum)");
+    }
+    std::size_t t = 2;
+    const int endColumn = toks.back().column + static_cast<int>(toks.back().text.size());
+    auto need = [&](std::size_t n, const char* what) {
+      if (toks.size() < t + n) fail(line, endColumn, "@expect " + std::string(buffer) + " needs " + what);
+    };
+    need(1, "X Y, all, or rect X Y W H");
+    if (toks[t].text == "all") {
+      p.form = ScriptProbe::Form::All;
+      ++t;
+    } else {
+      const bool rect = toks[t].text == "rect";
+      if (rect) {
+        p.form = ScriptProbe::Form::Rect;
+        ++t;
+      }
+      need(rect ? 4 : 2, rect ? "X Y W H" : "X Y");
+      pp.xColumn = toks[t].column;
+      const int x = static_cast<int>(integerArg(toks, t, line, "X", 0, 1 << 30));
+      const int y = static_cast<int>(integerArg(toks, t + 1, line, "Y", 0, 1 << 30));
+      int w = 1, h = 1;
+      if (rect) {
+        w = static_cast<int>(integerArg(toks, t + 2, line, "W", 1, 1 << 30));
+        h = static_cast<int>(integerArg(toks, t + 3, line, "H", 1, 1 << 30));
+      }
+      p.region = {x, y, x + w, y + h};
+      t += rect ? 4 : 2;
+    }
+    const std::size_t given = toks.size() - t;
+    const bool tolerance = p.buffer == ScriptProbe::Buffer::Color && given == values + 1;
+    if (given != values && !tolerance) {
+      const std::string want = values == 1 ? "one value" : p.buffer == ScriptProbe::Buffer::Color
+                                                               ? "R G B A (bytes) and an optional tolerance"
+                                                               : "four words R G B A";
+      fail(line, given > values ? toks[t + values + (p.buffer == ScriptProbe::Buffer::Color)].column : endColumn,
+           "@expect " + std::string(buffer) + " takes " + want + ", got " + std::to_string(given) + " value(s)");
+    }
+    for (std::size_t i = 0; i < values; ++i)
+      p.expected[i] = integerArg(toks, t + i, line, std::string(buffer) + " value", lo, hi);
+    if (tolerance) p.tolerance = static_cast<int>(integerArg(toks, t + values, line, "the tolerance", 0, 255));
+    return pp;
+  }
+
+  // @expect-picture stencil X Y, rows until @end (X Y: the bottom-left pixel).
+  PendingProbe parseExpectPicture(const std::vector<Token>& toks, int line) const {
+    PendingProbe pp{std::make_shared<ScriptProbe>(), 0, line, toks[0].column, 0};
+    if (toks.size() != 4 || toks[1].text != "stencil")
+      fail(line, toks[0].column, "@expect-picture takes stencil X Y (the picture's bottom-left pixel), then rows up to @end");
+    pp.probe->form = ScriptProbe::Form::Picture;
+    pp.xColumn = toks[2].column;
+    const int x = static_cast<int>(integerArg(toks, 2, line, "X", 0, 1 << 30));
+    const int y = static_cast<int>(integerArg(toks, 3, line, "Y", 0, 1 << 30));
+    pp.probe->region = {x, y, x, y};
+    return pp;
+  }
+
+  // One row of the picture: `.` for 0, `*` for any value, or a decimal 0..255.
+  void addPictureRow(PendingProbe& pp, const std::vector<Token>& toks, int line) const {
+    ScriptProbe& p = *pp.probe;
+    std::vector<int> row;
+    std::string text;
+    for (const Token& tok : toks) {
+      int v = -1;
+      if (tok.text == ".") {
+        v = 0;
+      } else if (tok.text != "*") {
+        const bool digits = !tok.text.empty() && tok.text.size() <= 3 &&
+                            std::all_of(tok.text.begin(), tok.text.end(), [](char c) { return c >= '0' && c <= '9'; });
+        v = digits ? std::stoi(std::string(tok.text)) : 256;
+        if (v > 255)
+          fail(line, tok.column, "picture cell '" + std::string(tok.text) + "' is not a stencil value 0..255, '.' or '*'" +
+                                     (tok.text[0] == '@' ? " (is @end missing?)" : ""));
+      }
+      row.push_back(v);
+      text += (text.empty() ? "" : " ") + std::string(tok.text);
+    }
+    if (!p.cells.empty() && row.size() != p.cells[0].size())
+      fail(line, toks[0].column, "picture row has " + std::to_string(row.size()) + " cells, the first row has " +
+                                     std::to_string(p.cells[0].size()));
+    p.cells.push_back(std::move(row));
+    p.picture += text + "\n";
+  }
+
+  void finishPicture(PendingProbe& pp) const {
+    ScriptProbe& p = *pp.probe;
+    p.region.x1 = p.region.x0 + static_cast<int>(p.cells[0].size());
+    p.region.y1 = p.region.y0 + static_cast<int>(p.cells.size());
+  }
+
+  void placeProbe(PendingProbe& pp, int width, int height) const {
+    ScriptProbe& p = *pp.probe;
+    if (p.form == ScriptProbe::Form::All) {
+      p.region = {0, 0, width, height};
+      return;
+    }
+    const PixelRect& r = p.region;
+    if (r.x1 <= width && r.y1 <= height) return;
+    const std::string window = std::to_string(width) + "x" + std::to_string(height) + " window";
+    if (p.form == ScriptProbe::Form::Pixel)
+      fail(pp.line, pp.xColumn, "pixel (" + std::to_string(r.x0) + "," + std::to_string(r.y0) + ") is outside the " +
+                                    window + " (origin bottom-left)");
+    fail(pp.line, pp.xColumn, "the " + std::to_string(r.x1 - r.x0) + "x" + std::to_string(r.y1 - r.y0) +
+                                  " region with bottom-left pixel (" + std::to_string(r.x0) + "," +
+                                  std::to_string(r.y0) + ") reaches outside the " + window);
   }
 
   // GL-valid arguments the Iris subset does not emulate are outside the call set.
@@ -412,6 +600,12 @@ int glVectorCount(GLCall call, std::uint32_t pname) {
       return 0;
     default: return 0;
   }
+}
+
+std::size_t Script::probeCount() const {
+  return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) {
+    return c.kind == ScriptCommand::Kind::Probe;
+  }));
 }
 
 Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }

@@ -9,7 +9,10 @@
 #include <string_view>
 #include <vector>
 
+#include <memory>
+
 #include "pipeline/gl_call.hpp"
+#include "pipeline/script_probe.hpp"
 
 namespace mpr {
 
@@ -37,12 +40,14 @@ struct ScriptArg {
 
 struct ScriptCommand {
   // A GL call, or a directive: @pass, @snapshot, @window_map (args: 9
-  // numbers, or none for off), @count_fragments (label: begin or end).
-  enum class Kind : std::uint8_t { Call, Pass, Snapshot, WindowMap, FragmentCount } kind = Kind::Call;
+  // numbers, or none for off), @count_fragments (label: begin or end),
+  // @expect and @expect-picture (probe; label: the directive as written).
+  enum class Kind : std::uint8_t { Call, Pass, Snapshot, WindowMap, FragmentCount, Probe } kind = Kind::Call;
   int line = 0;
   GLCall call = GLCall::Finish;
   std::vector<ScriptArg> args;
   std::string label;  // pass label or snapshot name
+  std::shared_ptr<const ScriptProbe> probe;  // Probe only
 };
 
 struct Script {
@@ -52,6 +57,7 @@ struct Script {
   std::optional<std::string> profile;
   std::vector<ScriptCommand> commands;
   std::size_t callCount() const;
+  std::size_t probeCount() const;
 };
 
 // Parses `text`; `file` names it in error messages. Throws ScriptError.

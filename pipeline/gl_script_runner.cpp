@@ -38,10 +38,11 @@ void executeCall(GLContext& gl, const ScriptCommand& cmd) {
   dispatch(emulator, cmd);
 }
 
-std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& hooks) {
+std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& hooks, std::size_t commands) {
   std::size_t errors = 0;
   GLEmulator emulator(gl);
-  for (const ScriptCommand& cmd : script.commands) {
+  for (std::size_t i = 0; i < script.commands.size() && i < commands; ++i) {
+    const ScriptCommand& cmd = script.commands[i];
     if (!mayJoinQuadDraw(cmd)) gl.flushVertices();
     switch (cmd.kind) {
       case ScriptCommand::Kind::WindowMap:
@@ -53,6 +54,9 @@ std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& ho
         break;
       case ScriptCommand::Kind::Snapshot:
         if (hooks.onSnapshot) hooks.onSnapshot(cmd, gl);
+        break;
+      case ScriptCommand::Kind::Probe:
+        if (hooks.onProbe) hooks.onProbe(cmd, gl);
         break;
       case ScriptCommand::Kind::Call: {
         if (hooks.beforeCall) hooks.beforeCall(cmd);

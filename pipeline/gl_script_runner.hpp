@@ -14,6 +14,8 @@ struct ScriptHooks {
   std::function<void(const ScriptCommand& call)> beforeCall;
   std::function<void(const ScriptCommand& pass)> onPass;
   std::function<void(const ScriptCommand& snapshot, const GLContext&)> onSnapshot;
+  // An @expect or @expect-picture: the buffers as they are at that line.
+  std::function<void(const ScriptCommand& probe, const GLContext&)> onProbe;
   // A call GL rejected: the call had no effect and `error` is what glGetError returns.
   std::function<void(const ScriptCommand& call, std::uint32_t error)> onGLError;
 };
@@ -24,7 +26,9 @@ std::string glErrorReport(const ScriptCommand& call, std::uint32_t error);
 // One call or directive on the context (no error reporting).
 void executeCall(GLContext& gl, const ScriptCommand& call);
 
-// Runs every command; returns the number of GL errors raised.
-std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& hooks = {});
+// Runs every command; returns the number of GL errors raised. `commands`
+// limits the run to the first so many (a pixel's history up to a probe).
+std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& hooks = {},
+                      std::size_t commands = static_cast<std::size_t>(-1));
 
 }  // namespace mpr

@@ -13,6 +13,7 @@ declare -A allowed=(
   [scene]="util framebuffer scene"
   [algorithms]="util framebuffer raster pipeline scene algorithms"
   [stepper]="util framebuffer raster pipeline stepper"
+  [testing]="util framebuffer raster pipeline testing"
   [conformance]="util framebuffer raster pipeline conformance"
   [reference]="util framebuffer scene reference"
   [reference/accuracy]="util framebuffer raster pipeline scene algorithms reference"

@@ -6,7 +6,7 @@
 
 #include "pipeline/gl_script.hpp"
 
-namespace mpr::cli {
+namespace mpr {
 
 struct ScriptPass {
   std::string label;
@@ -20,4 +20,4 @@ inline std::vector<ScriptPass> scriptPasses(const Script& script) {
   return passes;
 }
 
-}  // namespace mpr::cli
+}  // namespace mpr

@@ -1,0 +1,173 @@
+#include "cli/test_command.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/junit_xml.hpp"
+#include "framebuffer/image_writer.hpp"
+#include "pipeline/gl_script.hpp"
+#include "stepper/script_test.hpp"
+
+namespace mpr::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TestOptions {
+  std::vector<std::string> inputs;
+  std::string profile;
+  std::string junit;
+  std::string report;
+};
+
+// Every line after the first indented, so a multi-line explanation reads as
+// part of its script's line.
+std::string indentAfterFirst(const std::string& text, const std::string& indent) {
+  std::string o;
+  for (char c : text) {
+    o += c;
+    if (c == '\n') o += indent;
+  }
+  return o;
+}
+
+std::string indentAll(const std::string& text, const std::string& indent) {
+  std::string o;
+  bool start = true;
+  for (char c : text) {
+    if (start) o += indent;
+    o += c;
+    start = c == '\n';
+  }
+  return o;
+}
+
+// FILE, or every .gls under DIR (sorted, so the order never depends on the file system).
+bool collect(const std::string& input, std::vector<std::string>& paths) {
+  std::error_code ec;
+  if (!fs::is_directory(input, ec)) {
+    paths.push_back(input);
+    return true;
+  }
+  std::vector<std::string> found;
+  for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec))
+    if (it->is_regular_file() && it->path().extension() == ".gls") found.push_back(it->path().string());
+  if (ec) {
+    std::cerr << "mpr test: cannot read " << input << ": " << ec.message() << "\n";
+    return false;
+  }
+  if (found.empty()) {
+    std::cerr << "mpr test: no .gls scripts in " << input << "\n";
+    return false;
+  }
+  std::sort(found.begin(), found.end());
+  paths.insert(paths.end(), found.begin(), found.end());
+  return true;
+}
+
+int runTest(const TestOptions& o) {
+  // Every script is parsed before the first runs: a script error stops
+  // everything, with nothing written.
+  std::vector<std::string> paths;
+  for (const std::string& in : o.inputs)
+    if (!collect(in, paths)) return 2;
+  std::vector<Script> scripts;
+  bool bad = false;
+  for (const std::string& p : paths) {
+    try {
+      scripts.push_back(loadScript(p));
+    } catch (const ScriptError& e) {
+      std::cerr << e.what() << "\n";
+      bad = true;
+    }
+  }
+  if (bad) return 2;
+  std::vector<HardwareProfile> profiles;
+  for (const Script& s : scripts) {
+    const std::string name = o.profile.empty() ? s.profile.value_or("indigo") : o.profile;
+    const auto profile = findProfile(name);
+    if (!profile) {
+      std::cerr << "mpr test: unknown profile '" << name << "' (known: indigo, mesa)\n";
+      return 2;
+    }
+    profiles.push_back(*profile);
+  }
+
+  std::size_t passed = 0, failed = 0;
+  std::vector<JUnitCase> cases;
+  struct Difference {
+    std::string name;
+    int width, height;
+    std::vector<std::uint8_t> rgb;
+  };
+  std::vector<Difference> differences;
+  for (std::size_t i = 0; i < scripts.size(); ++i) {
+    const Script& s = scripts[i];
+    const ScriptTestResult r = runScriptTest(s, profiles[i]);
+    JUnitCase jc;
+    jc.name = fs::path(s.file).filename().string();
+    jc.classname = fs::path(s.file).parent_path().string();
+    std::replace(jc.classname.begin(), jc.classname.end(), '/', '.');
+    if (jc.classname.empty()) jc.classname = ".";
+    if (r.passed) {
+      ++passed;
+      std::cout << "ok   " << s.file << " (" << r.probes << " probe" << (r.probes == 1 ? "" : "s") << ")\n";
+    } else {
+      ++failed;
+      const std::string where = s.file + ":" + std::to_string(r.failed->line) + ": " + r.failed->label;
+      std::cout << "FAIL " << where << "\n"
+                << "     " << indentAfterFirst(r.message, "     ") << "\n"
+                << indentAll(r.history, "     ");
+      jc.outcome = JUnitCase::Outcome::Failed;
+      jc.message = where + ": " + r.message.substr(0, r.message.find('\n'));
+      jc.text = r.message + "\n" + r.history;
+      differences.push_back({fs::path(s.file).stem().string() + ".line" + std::to_string(r.failed->line) + ".png",
+                             r.width, r.height, r.difference});
+    }
+    cases.push_back(std::move(jc));
+  }
+  std::cout << passed << " passed, " << failed << " failed\n";
+
+  try {
+    if (!o.junit.empty()) writeFileAtomically(o.junit, junitXml("mpr test", cases));
+    if (!o.report.empty()) {
+      fs::create_directories(o.report);
+      for (const Difference& d : differences)
+        writeRgbImage((fs::path(o.report) / d.name).string(), d.width, d.height, d.rgb.data());
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "mpr test: " << e.what() << "\n";
+    return 2;
+  }
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void addTestCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<TestOptions>();
+  CLI::App* c = app.add_subcommand("test", "Run GL scripts with probes (@expect) as tests");
+  c->footer(
+      "Runs every script (a folder: every .gls under it, sorted), evaluates its @expect and\n"
+      "@expect-picture probes in order (docs/gl-script-directives.md) and prints one line per\n"
+      "script: ok, or FAIL with the first probe that does not hold, the expected and found values,\n"
+      "and the history of its first failing pixel up to the probe (as mpr step --pixel words it).\n"
+      "Then 'N passed, N failed'. Exit status 0 when every script passes, 1 when one fails, 2 for a\n"
+      "script error (every script is parsed first; nothing runs or is written then).\n"
+      "--junit FILE: JUnit XML, one testcase per script. --report DIR: a difference image per failing\n"
+      "probe, DIR/<script>.line<N>.png (probed pixels that hold white, those that do not red, the\n"
+      "rest of the window dark grey).");
+  c->add_option("inputs", o->inputs, "GL scripts (.gls) or folders of them")->required();
+  c->add_option("--profile", o->profile, "hardware profile: indigo or mesa; overrides @profile");
+  c->add_option("--junit", o->junit, "write JUnit XML to FILE");
+  c->add_option("--report", o->report, "write a difference image per failing probe into DIR");
+  c->callback([o, &exitCode] { exitCode = runTest(*o); });
+}
+
+}  // namespace mpr::cli
