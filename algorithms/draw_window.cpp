@@ -19,6 +19,7 @@
 #include <string>
 
 #include "algorithms/apply_stencil.hpp"
+#include "algorithms/image_samples.hpp"
 #include "algorithms/ref_face.hpp"
 #include "algorithms/ref_light.hpp"
 #include "algorithms/refraction.hpp"
@@ -36,6 +37,7 @@ class WindowRenderer {
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
         shadows_(s, p), gl_scene_(s, gl, p.shadows || p.reflections) {
     gl_scene_.setViewSample(sample);
+    image_ = sample.image;
     if (p.shadows) refLights_ = reflectedLights(s, faces_);
     counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
   }
@@ -215,9 +217,18 @@ class WindowRenderer {
           continue;
         }
         if (!r->totalReflection) next = r->view;  // past the critical angle the face is a mirror
-        if (face.kind == MaterialKind::Translucent && !r->totalReflection) {
+        const MaterialKind kind = face.kind;
+        if (kind == MaterialKind::Frosted && !r->totalReflection) {
+          // Frosted glass (1997 §3): the view through the face sheared about
+          // its normal by this image's stochastic (X, Y) shear; the images of
+          // the accumulation average the shears into the scattered view.
+          const SceneMaterial& fm = s_.materials[static_cast<std::size_t>(s_.objects[static_cast<std::size_t>(face.object)].material)];
+          next.world = next.world * shearAboutFace(face.centre, face.normal, frostedShear(face.shear, fm.samples, image_));
+        }
+        if ((kind == MaterialKind::Translucent || kind == MaterialKind::Frosted) && !r->totalReflection) {
           // Fog from the face (its centre's eye distance in the view through
-          // it) to fog_distance behind it.
+          // it) to fog_distance behind it (frosted glass scatters as
+          // translucency does, 1997 §3).
           const DMat4 view = glm::lookAt(DVec3(s_.camera.position), DVec3(s_.camera.lookAt), DVec3(s_.camera.up));
           const DVec4 c = view * next.world * DVec4(face.centre, 1.0);
           next.fog = true;
@@ -386,6 +397,7 @@ class WindowRenderer {
   std::vector<std::string> path_;
   DrawWindowCounts counts_;
   SceneGL gl_scene_;
+  int image_ = 0;  // which image of an accumulation (frosted faces' shear)
 };
 
 }  // namespace

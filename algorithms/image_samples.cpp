@@ -44,11 +44,42 @@ bool hasAreaLight(const Scene& s) {
 
 int accumulatedImages(const Scene& s) {
   const int lightSamples = hasAreaLight(s) ? s.render.softShadowSamples : 1;
-  return std::max(s.render.antialiasSamples, lightSamples);
+  int frosted = 1;
+  if (s.render.frosted)
+    for (const SceneObject& o : s.objects) {
+      const SceneMaterial& m = s.materials[static_cast<std::size_t>(o.material)];
+      if (m.kind == MaterialKind::Frosted) frosted = std::max(frosted, m.samples);
+    }
+  return std::max({s.render.antialiasSamples, lightSamples, frosted});
+}
+
+DVec2 frostedShear(double m, int samples, int i) {
+  if (samples <= 1 || !(m > 0.0)) return DVec2(0.0);
+  const DVec2 u = tablePoint(i % samples, samples, 5);
+  // Box-Muller: u.x in (0, 1) (the table's cells are centred), a normal pair.
+  const double r = std::sqrt(-2.0 * std::log(u.x)), a = 2.0 * kPi * u.y;
+  return m * r * DVec2(std::cos(a), std::sin(a));
+}
+
+DMat4 shearAboutFace(DVec3 centre, DVec3 normal, DVec2 shear) {
+  const DVec3 n = glm::normalize(normal);
+  const DVec3 helper = std::abs(n.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
+  const DVec3 t = glm::normalize(glm::cross(helper, n)), b = glm::cross(n, t);
+  DMat4 frame(1.0);  // face frame -> world: columns t, b, n, centre
+  frame[0] = DVec4(t, 0.0);
+  frame[1] = DVec4(b, 0.0);
+  frame[2] = DVec4(n, 0.0);
+  frame[3] = DVec4(centre, 1.0);
+  DMat4 s(1.0);
+  s[2][0] = shear.x;  // x' = x + X z
+  s[2][1] = shear.y;  // y' = y + Y z
+  return frame * s * glm::inverse(frame);
 }
 
 ViewSample viewSample(const Scene& s, int i, int n) {
   ViewSample v;
+  v.image = i;
+  v.images = n;
   const int a = s.render.antialiasSamples;
   const Camera& c = s.camera;
   v.focalDistance = c.focalDistance > 0.0f ? c.focalDistance : glm::length(DVec3(c.lookAt) - DVec3(c.position));

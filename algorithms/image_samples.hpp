@@ -18,12 +18,14 @@ struct ViewSample {
   DVec2 pixelOffset{0.0};
   DVec2 lens{0.0};
   double focalDistance = 1.0;
+  int image = 0, images = 1;  // which image of the accumulation this is
   bool any() const { return pixelOffset != DVec2(0.0) || lens != DVec2(0.0); }
 };
 
 // How many images a scene needs: one, unless it asks for antialiasing,
-// depth of field or soft shadows. The antialias (and lens) samples and the
-// light samples are paired image by image, each table cycled: N = max(A, S).
+// depth of field, soft shadows or frosted glass. The antialias (and lens)
+// samples, the light samples and the frosted faces' shear samples are
+// paired image by image, each table cycled: N = max(A, S, F).
 int accumulatedImages(const Scene& scene);
 
 // The view of image i of n: the i-th point of a fixed table (a Hammersley
@@ -38,5 +40,18 @@ ViewSample viewSample(const Scene& scene, int i, int n);
 // facing the middle of the scene's objects (its bounding box). Lights
 // without a radius stay.
 Scene lightSampleScene(const Scene& scene, int i, int n);
+
+// The stochastic (X, Y) shear of a frosted face in image i of n (1997 §3):
+// m times a pair of normal deviates, from the i mod `samples`-th point of a
+// third table (base-5 radical inverse) through Box and Muller's map. The
+// face's view is sheared by x' = x + X z, y' = y + Y z in the face's frame
+// (z along its normal), so what lies farther behind the face blurs more.
+DVec2 frostedShear(double m, int samples, int i);
+
+// The shear as a world-space matrix: the face's frame F (origin `centre`,
+// z along `normal`) times the shear times F's inverse ("premultiplied by
+// the global inverse transform of the specular face normal and
+// postmultiplied by the global transform of the normal").
+DMat4 shearAboutFace(DVec3 centre, DVec3 normal, DVec2 shear);
 
 }  // namespace mpr

@@ -14,6 +14,7 @@ std::vector<RefFace> findRefFaces(const Scene& scene) {
       f.kind = m.kind;
       f.ior = m.ior;
       f.fogDistance = m.fogDistance;
+      f.shear = m.shear;
       f.color = m.diffuse;
       DVec3 newell(0.0), centre(0.0);
       for (std::size_t i = 0; i < poly.size(); ++i) {

@@ -11,7 +11,9 @@ namespace mpr {
 
 // Refracting materials: the recursion looks through them with a refracted
 // camera, and their light goes on through a refracted light volume.
-inline bool refracts(MaterialKind k) { return k == MaterialKind::Refractive || k == MaterialKind::Translucent; }
+inline bool refracts(MaterialKind k) {
+  return k == MaterialKind::Refractive || k == MaterialKind::Translucent || k == MaterialKind::Frosted;
+}
 
 struct RefFace {
   int object = 0;              // index into Scene::objects
@@ -22,7 +24,8 @@ struct RefFace {
   MaterialKind kind = MaterialKind::Mirror;
   double ior = 1.0;            // refractive faces
   bool refracts() const { return mpr::refracts(kind); }
-  float fogDistance = 1.0f;    // translucent faces
+  float fogDistance = 1.0f;    // translucent and frosted faces
+  float shear = 0.0f;          // frosted faces: the stochastic shear's multiplier m (1997 §3)
   Vec3 color{0.0f};            // the material's diffuse colour (translucent fog colour)
 
   // > 0 in front of the face, < 0 behind it.
@@ -32,11 +35,11 @@ struct RefFace {
 
 // The materials whose faces the recursion looks through: mirrors (when
 // reflections are on) and refracting faces (when refractions are on).
-// Translucency and frosted glass are drawn as their diffuse colour until
-// their passes land.
+// Frosted glass (1997 §3) refracts like glass, its view sheared
+// stochastically about the face normal, one shear per accumulated image.
 inline bool isRefMaterial(const SceneMaterial& m, const RenderSettings& r) {
   return (m.kind == MaterialKind::Mirror && r.reflections) || (m.kind == MaterialKind::Refractive && r.refractions) ||
-         (m.kind == MaterialKind::Translucent && r.translucency);
+         (m.kind == MaterialKind::Translucent && r.translucency) || (m.kind == MaterialKind::Frosted && r.frosted);
 }
 
 // Every polygon of every ref object, in scene order (Newell normals; the

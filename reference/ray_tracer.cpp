@@ -73,20 +73,23 @@ Traced trace(const TraceContext& c, const Ray& ray, double tMin, double tMax, in
     // The change of medium (1994): from the front, air into the material.
     const bool front = h.frontFacing;
     const double eta = front ? 1.0 / m.ior : m.ior;
-    DVec3 normal = front ? n : -n;
-    if (m.kind == MaterialKind::Frosted) {
-      // Rough transmission: each of the pixel's samples takes one normal,
-      // tilted by a Gaussian of standard deviation `shear` in slope along
-      // two tangents; the pixel's average is the frosted image.
+    const DVec3 normal = front ? n : -n;
+    std::optional<DVec3> refracted = refractDirection(ray.direction, normal, eta);
+    if (m.kind == MaterialKind::Frosted && refracted) {
+      // Rough transmission, the model the pipeline's stochastic shear (1997
+      // §3) draws: the refracted direction tilted by a Gaussian of standard
+      // deviation `shear` in slope along the face's tangents (a point z
+      // behind the face moves by shear * z sideways), one tilt per pixel
+      // sample; the pixel's average is the frosted image.
       const DVec2 g = sampler.gaussian(sample, static_cast<std::uint32_t>(depth));
       const DVec3 u = perpendicular(normal), v = glm::cross(normal, u);
-      normal = glm::normalize(normal + static_cast<double>(m.shear) * (g.x * u + g.y * v));
+      const double along = -glm::dot(*refracted, normal);  // > 0: into the face
+      refracted = glm::normalize(*refracted + static_cast<double>(m.shear) * along * (g.x * u + g.y * v));
     }
-    const std::optional<DVec3> refracted = refractDirection(ray.direction, normal, eta);
     // Past the critical angle the face reflects it all (weight t still).
     const Traced behind = follow(refracted ? *refracted : reflectAbout(ray.direction, normal));
     through = behind.colour;
-    if (m.kind == MaterialKind::Translucent && refracted) {
+    if ((m.kind == MaterialKind::Translucent || m.kind == MaterialKind::Frosted) && refracted) {
       // The 1994 fog: toward the material's colour with the distance behind
       // the face, full at fog_distance (nothing hit: full fog).
       const double f = std::clamp(1.0 - behind.distance / static_cast<double>(m.fogDistance), 0.0, 1.0);
