@@ -205,6 +205,15 @@ class WindowRenderer {
         continue;
       }
       ViewCamera next = refCamera(cam, face, f, refLevel);
+      const SceneMaterial& fm = s_.materials[static_cast<std::size_t>(s_.objects[static_cast<std::size_t>(face.object)].material)];
+      if (face.kind == MaterialKind::Mirror && fm.roughness > 0.0f && s_.render.frosted) {
+        // A glossy mirror (1997 Fig. 4, the marble): the reflected view
+        // sheared about the face normal like frosted glass, by twice the
+        // Ward roughness (microfacets tilted by alpha tilt the reflection by
+        // 2 alpha), one shear per accumulated image.
+        next.world = next.world * shearAboutFace(face.centre, face.normal,
+                                                 frostedShear(2.0 * fm.roughness, fm.samples, image_));
+      }
       if (face.refracts()) {
         const auto r = refractedView(cam, s_.camera, face, f, face.ior, gl_scene_.aspect());
         if (!r) {
@@ -222,7 +231,6 @@ class WindowRenderer {
           // Frosted glass (1997 §3): the view through the face sheared about
           // its normal by this image's stochastic (X, Y) shear; the images of
           // the accumulation average the shears into the scattered view.
-          const SceneMaterial& fm = s_.materials[static_cast<std::size_t>(s_.objects[static_cast<std::size_t>(face.object)].material)];
           next.world = next.world * shearAboutFace(face.centre, face.normal, frostedShear(face.shear, fm.samples, image_));
         }
         if ((kind == MaterialKind::Translucent || kind == MaterialKind::Frosted) && !r->totalReflection) {

@@ -48,7 +48,8 @@ int accumulatedImages(const Scene& s) {
   if (s.render.frosted)
     for (const SceneObject& o : s.objects) {
       const SceneMaterial& m = s.materials[static_cast<std::size_t>(o.material)];
-      if (m.kind == MaterialKind::Frosted) frosted = std::max(frosted, m.samples);
+      if (m.kind == MaterialKind::Frosted || (m.kind == MaterialKind::Mirror && m.roughness > 0.0f))
+        frosted = std::max(frosted, m.samples);
     }
   return std::max({s.render.antialiasSamples, lightSamples, frosted});
 }

@@ -23,8 +23,9 @@ struct ViewSample {
 };
 
 // How many images a scene needs: one, unless it asks for antialiasing,
-// depth of field, soft shadows or frosted glass. The antialias (and lens)
-// samples, the light samples and the frosted faces' shear samples are
+// depth of field, soft shadows, frosted glass or glossy mirrors (a mirror
+// with a roughness). The antialias (and lens) samples, the light samples
+// and the frosted and glossy faces' shear samples are
 // paired image by image, each table cycled: N = max(A, S, F).
 int accumulatedImages(const Scene& scene);
 

@@ -68,7 +68,17 @@ Traced trace(const TraceContext& c, const Ray& ray, double tMin, double tMax, in
                  sample, counts);
   };
   if (m.kind == MaterialKind::Mirror) {
-    through = follow(reflectAbout(ray.direction, n)).colour;
+    DVec3 dir = reflectAbout(ray.direction, n);
+    if (m.roughness > 0.0f) {
+      // A glossy mirror (1997 Fig. 4): microfacet normals tilted by slope
+      // alpha tilt the reflected ray by twice that; a Gaussian of standard
+      // deviation 2 alpha in slope along the face's tangents, one tilt per
+      // pixel sample (the model the pipeline's sheared mirror views draw).
+      const DVec2 g = sampler.gaussian(sample, static_cast<std::uint32_t>(depth));
+      const DVec3 u = perpendicular(n), v = glm::cross(n, u);
+      dir = glm::normalize(dir + 2.0 * static_cast<double>(m.roughness) * glm::dot(dir, n) * (g.x * u + g.y * v));
+    }
+    through = follow(dir).colour;
   } else {
     // The change of medium (1994): from the front, air into the material.
     const bool front = h.frontFacing;

@@ -89,5 +89,46 @@ render: {width: 48, height: 36}
   EXPECT_GT(inside, 10);
 }
 
+// A glossy mirror (roughness 0.125, 8 samples): its reflected view sheared
+// by 2 alpha = 0.25 per unit of distance from the mirror, one shear an
+// image; everything but the mirror repeats exactly in every image, so only
+// the mirror's pixels differ from the same mirror without roughness.
+TEST(GlossyMirror, OnlyTheReflectionBlurs) {
+  const std::string text = R"(
+camera: {position: [0, 1, 4], look_at: [0, 1, 0], fov: 45, near: 0.1, far: 30}
+ambient: [0.3, 0.3, 0.3]
+lights: [{position: [0, 4, 3]}]
+materials:
+  mirror: {kind: mirror, diffuse: [0.1, 0.1, 0.1], reflectance: 0.9, roughness: 0.125, samples: 8}
+  red:    {diffuse: [0.9, 0.1, 0.1]}
+  floor:  {diffuse: [0.5, 0.5, 0.5]}
+objects:
+  - {name: floor, primitive: plane, scale: [10, 1, 10], material: floor}
+  - {name: mirror, primitive: quad, translate: [0, 1, -1], scale: [1, 1, 1], material: mirror}
+  - {name: bar, primitive: box, translate: [0.2, 1, 1], scale: [0.1, 2, 0.1], material: red}
+render: {width: 48, height: 36}
+)";
+  const Scene glossy = loadSceneText(text, "s.yaml");
+  const Scene sharp = loadSceneText(text, "s.yaml", {"render.frosted=false"});
+  EXPECT_EQ(accumulatedImages(glossy), 8);
+  EXPECT_EQ(accumulatedImages(sharp), 1);
+  GLContext a(48, 36, indigoProfile()), b(48, 36, indigoProfile());
+  GLCommandStream sa(a, false), sb(b, false);
+  renderScene(glossy, sa);
+  renderScene(sharp, sb);
+  // The mirror, 5 from the eye, 1 wide: half-height 5 tan 22.5 = 2.071, so
+  // window x 24 -+ 0.5/2.071*18 = 19.7 .. 28.3, y 13.7 .. 22.3.
+  int inside = 0, outside = 0;
+  for (int y = 0; y < 36; ++y)
+    for (int x = 0; x < 48; ++x) {
+      const bool mirror = x >= 20 && x <= 28 && y >= 14 && y <= 22;
+      const bool near = x >= 18 && x <= 30 && y >= 12 && y <= 24;
+      if (!near) outside += a.colorAt(x, y) != b.colorAt(x, y);
+      if (mirror) inside += a.colorAt(x, y) != b.colorAt(x, y);
+    }
+  EXPECT_EQ(outside, 0);
+  EXPECT_GT(inside, 5);
+}
+
 }  // namespace
 }  // namespace mpr
