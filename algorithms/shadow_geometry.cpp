@@ -1,5 +1,9 @@
 #include "algorithms/shadow_geometry.hpp"
 
+#include <utility>
+
+#include "algorithms/silhouette.hpp"
+
 namespace mpr {
 
 VolumeGeometry objectShadowVolume(const SceneObject& object, Vec3 light, const BoundingSphere& receivers) {
@@ -14,6 +18,16 @@ VolumeGeometry objectShadowVolume(const SceneObject& object, Vec3 light, const B
   v.caps = v.volume.lightCap;
   v.caps.insert(v.caps.end(), v.volume.darkCap.begin(), v.volume.darkCap.end());
   return v;
+}
+
+VolumeGeometry twoSidedShadowVolume(const SceneObject& object, Vec3 light, const BoundingSphere& receivers) {
+  const Mesh& m = object.mesh;
+  for (const auto& t : m.triangles)
+    if (triangleFacesLight(m.positions[t[0]], m.positions[t[1]], m.positions[t[2]], light))
+      return objectShadowVolume(object, light, receivers);
+  SceneObject turned = object;
+  for (auto& t : turned.mesh.triangles) std::swap(t[1], t[2]);
+  return objectShadowVolume(turned, light, receivers);
 }
 
 std::array<Vec3, 4> nearRectangle(const Camera& camera, const DMat4& world, double aspect) {

@@ -14,6 +14,9 @@ namespace mpr {
 
 // `object`'s volume from `light`, extruded until it leaves `receivers`.
 VolumeGeometry objectShadowVolume(const SceneObject& object, Vec3 light, const BoundingSphere& receivers);
+// The same for a two-sided object (glass): when no triangle faces the light
+// (an open face lit from behind), the volume of its triangles turned round.
+VolumeGeometry twoSidedShadowVolume(const SceneObject& object, Vec3 light, const BoundingSphere& receivers);
 
 // The near-plane rectangle of `camera` seen through `world` (a virtual view),
 // in real-scene coordinates.

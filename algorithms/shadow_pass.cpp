@@ -20,7 +20,12 @@ ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : scene_(scen
     for (const SceneObject& o : scene.objects) {
       const ShadowRole role = shadowRole(o, scene);
       if (role == ShadowRole::None) continue;
-      VolumeGeometry v = objectShadowVolume(o, scene.lights[l].position, bounds);
+      // Glass has two sides: a refracting face lit from behind shadows the
+      // direct light as one lit from the front does (issue 12, bug 1: the
+      // floor beyond it got the direct light and the light passed through).
+      VolumeGeometry v = role == ShadowRole::RefractingFace
+                             ? twoSidedShadowVolume(o, scene.lights[l].position, bounds)
+                             : objectShadowVolume(o, scene.lights[l].position, bounds);
       if (!v.closed && l == 0 && role == ShadowRole::Caster)
         warnings_.push_back("object '" + o.name + "' (line " + std::to_string(o.line) +
                             ") is not a closed mesh: its shadow volume is open and may count wrongly");

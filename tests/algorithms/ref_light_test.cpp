@@ -247,3 +247,39 @@ objects:
 
 }  // namespace
 }  // namespace mpr
+
+namespace mpr {
+namespace {
+
+// Issue 12, bug 1: a refracting face lit from behind shadows the direct
+// light like one lit from the front. Looking straight down at the floor
+// point (0, 0, 0) (the middle of a 65 x 49 window), a glass quad at z = -1
+// facing +z, the light behind it at (0, 4, -3): the line from the light to
+// the point crosses the glass at y = 4 - 4 * 2/3 = 1.33, inside it. With
+// ior 1 the bent light is the light itself, scaled by the transmittance
+// 0.5; the floor (diffuse 0.5, a vertex at the point) gets the ambient
+// 0.1 * 0.5 = 0.05 and 0.5 * (0.5 * N.L) with N.L = 4/5: 0.05 + 0.2 = 0.25,
+// 63.75: 64. Without the face's own shadow it got the direct light too:
+// 0.05 + 0.4 + 0.2 = 0.65 (166).
+TEST(RefLight, GlassLitFromBehindPassesOnlyItsTransmittance) {
+  const std::string text = R"(
+camera: {position: [0, 8, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 40, near: 0.1, far: 30}
+ambient: [0.1, 0.1, 0.1]
+lights: [{position: [0, 4, -3], attenuation: [1, 0, 0]}]
+materials:
+  floor: {diffuse: [0.5, 0.5, 0.5]}
+  glass: {kind: refractive, diffuse: [0, 0, 0], ior: 1, transmittance: 0.5}
+objects:
+  - {name: floor, primitive: plane, subdivisions: 8, scale: [4, 1, 4], material: floor}
+  - {name: glass, primitive: quad, translate: [0, 1.5, -1], scale: [4, 3, 1], material: glass}
+render: {width: 65, height: 49}
+)";
+  const Scene s = loadSceneText(text, "s.yaml");
+  GLContext gl(65, 49, indigoProfile());
+  GLCommandStream stream(gl, false);
+  renderScene(s, stream);
+  EXPECT_NEAR(gl.colorAt(32, 24)[0], 64, 1);
+}
+
+}  // namespace
+}  // namespace mpr
