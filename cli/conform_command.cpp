@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -26,8 +27,11 @@ struct ConformOptions {
   std::string reportDir;
   int random = 0;               // number of random scripts
   std::uint64_t seed = 1;       // first seed
+  std::string family = "default";  // the random scripts' family
   bool quiet = false;           // only the summary table
   bool strict = false;          // known Mesa departures fail too
+  bool print = false;           // print the random scripts, run nothing
+  double minWithin = 100.0;     // exit 0 when at least this percentage of scripts is within bounds
 };
 
 // Mesa 22.3's known departures from GL 1.1 that MPR can emulate, by the
@@ -198,17 +202,29 @@ int runConform(const ConformOptions& o) {
     std::cerr << "mpr conform: give one or more scripts, or --random N\n";
     return 2;
   }
+  const std::vector<std::string>& families = randomFamilies();
+  if (std::find(families.begin(), families.end(), o.family) == families.end()) {
+    std::cerr << "mpr conform: --family must be one of";
+    for (const std::string& f : families) std::cerr << " " << f;
+    std::cerr << "\n";
+    return 2;
+  }
   // Parse everything first: a bad script stops the run before anything is compared.
   std::vector<Script> scripts;
   try {
     for (const std::string& path : o.scripts) scripts.push_back(loadScript(path));
     for (int i = 0; i < o.random; ++i) {
       const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(i);
-      scripts.push_back(parseScript(randomConformanceScript(seed), "random-seed-" + std::to_string(seed) + ".gls"));
+      const std::string name = o.family == "default" ? "random-seed-" : "random-" + o.family + "-seed-";
+      scripts.push_back(parseScript(randomFamilyScript(o.family, seed), name + std::to_string(seed) + ".gls"));
     }
   } catch (const ScriptError& e) {
     std::cerr << e.what() << "\n";
     return 2;
+  }
+  if (o.print) {
+    for (const Script& s : scripts) std::cout << "# " << s.file << "\n" << s.text;
+    return 0;
   }
   Totals totals;
   int worst = 0;
@@ -233,6 +249,9 @@ int runConform(const ConformOptions& o) {
                 << totals.maxDiff[b] << "\n";
     for (const std::string& f : totals.failures) std::cout << "out of bounds: " << f << "\n";
   }
+  if (worst == 1 && o.minWithin < 100.0 &&
+      100.0 * static_cast<double>(totals.conforming) >= o.minWithin * static_cast<double>(totals.scripts))
+    return 0;
   return worst;
 }
 
@@ -249,6 +268,12 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   c->add_option("scripts", opts->scripts, "GL scripts to run");
   c->add_option("--random", opts->random, "also run N random scripts (seeded, dyadic coordinates)");
   c->add_option("--seed", opts->seed, "first seed of --random (default 1)");
+  c->add_option("--family", opts->family,
+                "family of the --random scripts: default (dyadic, orthographic), perspective, matrices, "
+                "primitives, lighting, fog, clip_planes, accumulation, mixed");
+  c->add_option("--min-within", opts->minWithin,
+                 "exit 0 when at least this percentage of the scripts is within bounds (default 100)");
+  c->add_flag("--print", opts->print, "print the --random scripts instead of running them");
   c->add_flag("-q,--quiet", opts->quiet, "print only scripts out of bounds and the table");
   c->add_flag("--strict", opts->strict, "known Mesa departures from GL 1.1 fail a script too");
   c->add_option("--driver", opts->driver, "Mesa driver: llvmpipe (default) or softpipe");

@@ -216,7 +216,9 @@ class GLContext {
   void afterMatrixChange();
   void applyColorMaterial();
   ClipVertex processVertex(const Vertex& v) const;
-  void drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal);
+  // pairsSwapped: each two consecutive triangles drawn in the other order (an unclipped quad strip).
+  void drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal,
+                     bool pairsSwapped = false);
   void settle() const;  // closes the open quad draw (a reader or a state change sees it drawn)
   void drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
   void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,

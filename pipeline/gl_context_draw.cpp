@@ -366,6 +366,20 @@ void GLContext::end() {
   std::vector<ClipVertex> processed;
   processed.reserve(vertices_.size());
   for (const Vertex& v : vertices_) processed.push_back(processVertex(v));
+  if (primitive_ == PrimitiveType::QuadStrip) {
+    // A quad strip is (2, 0, 3) then (0, 1, 3) per quad through the draw
+    // module's pipeline (draw_decompose_tmp.h, QUAD(2, 0, 1, 3)), which runs
+    // when any vertex lies outside a clip plane; otherwise llvmpipe's setup
+    // (lp_setup_vbuf.c) draws the same two triangles in the other order,
+    // (0, 1, 3) first, which decides the pixels where a quad overlaps itself.
+    const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
+    // The vbo trims the strip to an even count first: a last odd vertex
+    // takes no part in the decision.
+    bool anyOutside = false;
+    for (std::size_t i = 0; i < (processed.size() & ~std::size_t{1}); ++i)
+      anyOutside = anyOutside || drawClipMask(processed[i].clip, userPlanes) != 0;
+    return drawProcessed(primitive_, processed, false, !anyOutside);
+  }
   if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
 
   // llvmpipe draws quads as MPR does, (0, 1, 2) and (0, 2, 3), except when
@@ -396,9 +410,12 @@ void GLContext::end() {
   quadDraw_.waiting.insert(quadDraw_.waiting.end(), processed.begin(), processed.end());
 }
 
-void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal) {
+void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal,
+                              bool pairsSwapped) {
   std::vector<AssembledTriangle> tris = assembleTriangles(type, static_cast<std::uint32_t>(processed.size()));
   if (tris.empty()) return;
+  if (pairsSwapped)
+    for (std::size_t k = 0; k + 1 < tris.size(); k += 2) std::swap(tris[k], tris[k + 1]);
   if (quadsOtherDiagonal)
     for (std::size_t k = 0; k < tris.size(); k += 2) {
       const std::uint32_t q = tris[k].v[0];  // MPR's quad triangles both start at the quad's first vertex
