@@ -13,7 +13,7 @@
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/gl_script.hpp"
 #include "pipeline/gl_script_runner.hpp"
-#include "pipeline/script_probe.hpp"
+#include "framebuffer/script_probe.hpp"
 
 namespace mpr::cli {
 namespace {
