@@ -13,7 +13,7 @@
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/gl_script.hpp"
 #include "pipeline/gl_script_runner.hpp"
-#include "pipeline/script_probe.hpp"
+#include "framebuffer/script_probe.hpp"
 
 namespace mpr::cli {
 namespace {
@@ -111,6 +111,10 @@ void addGlCommand(CLI::App& app, int& exitCode) {
       "@profile NAME, @pass LABEL, @snapshot NAME. Script errors print FILE:LINE:COLUMN and exit\n"
       "with status 2 before anything is written. Calls GL rejects are reported as\n"
       "FILE:LINE: GL_INVALID_... in glX and the run goes on.\n"
+      "Probes (@expect stencil|depth|color|accum X Y V..., ... all V..., ... rect X Y W H V...,\n"
+      "@expect-picture stencil X Y ... @end; docs/gl-script-directives.md) are evaluated where they\n"
+      "stand: the first that does not hold prints FILE:LINE: the probe: expected and found, and\n"
+      "exits with status 1, writing nothing. mpr test runs scripts with probes as tests.\n"
       "With --dump DIR: color.npy depth.npy stencil.npy accum.npy color.png, and\n"
       "NAME-<buffer>.npy for every @snapshot NAME.");
   gl->add_option("script", opts->script, "GL script to run")->required();

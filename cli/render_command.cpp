@@ -9,8 +9,10 @@
 #include <sstream>
 
 #include "algorithms/gl_command_stream.hpp"
+#include "algorithms/scene_expectations.hpp"
 #include "algorithms/scene_renderer.hpp"
 #include "cli/scene_arguments.hpp"
+#include "cli/scene_test.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
 #include "scene/scene_loader.hpp"
@@ -80,11 +82,14 @@ int runRender(const RenderOptions& o) {
     return 2;
   }
   GLCommandStream stream(*gl, !o.traceFile.empty());
+  // The scene's expect: list, read at its passes (nothing drawn changes).
+  SceneExpectationWatcher watcher(scene, stream, *gl);
   const bool tty = isatty(2);
   const auto t0 = std::chrono::steady_clock::now();
   const RenderResult result = renderScene(scene, stream, [&](const RenderProgress& p) {
     if (tty) std::cerr << "\rrender: view " << p.views << " of at most " << p.predictedViews << "   " << std::flush;
   }, !o.noCull);
+  watcher.finish();
   for (const std::string& w : result.counts.warnings) std::cerr << scene.file << ": warning: " << w << "\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
@@ -105,6 +110,18 @@ int runRender(const RenderOptions& o) {
   }
   std::cerr << "rendered " << scene.file << " (" << scene.render.width << "x" << scene.render.height << ", "
             << scene.triangleCount() << " triangles) to " << o.output << " in " << seconds << " s\n";
+  // The expectations, once the render's files are written (they never change
+  // what is drawn): a located error for an `after` no pass matched (status
+  // 2), else the first that does not hold, in the render's order (status 1).
+  if (scene.expectations.empty()) return 0;
+  const cli::SceneTestResult t = cli::sceneTestResult(scene, watcher, true);
+  for (const std::string& e : t.errors) std::cerr << e << "\n";
+  if (!t.errors.empty()) return 2;
+  if (!t.passed) {
+    std::cerr << t.where << "\n" << cli::sceneFailureText(t, "  ");
+    return 1;
+  }
+  std::cerr << t.expectations << " expectation" << (t.expectations == 1 ? "" : "s") << " held\n";
   return 0;
 }
 
@@ -116,7 +133,11 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   c->footer(
       "The scene format is docs/scene-format.md (mpr render --describe-format prints its schema).\n"
       "Scene errors print FILE:LINE:COLUMN, exit with status 2 and write nothing. The image is written\n"
-      "through OpenImageIO (PNG, TIFF or EXR by extension) to a temporary name and renamed into place.");
+      "through OpenImageIO (PNG, TIFF or EXR by extension) to a temporary name and renamed into place.\n"
+      "The scene's expect: list (probes read after a pass whose label matches, or at the end) is checked\n"
+      "once the files are written: the first expectation that does not hold, in the render's order,\n"
+      "prints FILE:LINE: the expectation, expected and found, the pass and the pixel's history, and\n"
+      "exits with status 1; an after: that matched no pass is a located error, status 2.");
   c->add_option("scene", o->scene, "scene file (YAML); none renders the default scene");
   c->add_option("-o,--output", o->output, "output image (default out/render.png)");
   c->add_option("--width", o->width, "image width (overrides render.width)");

@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "cli/junit_xml.hpp"
+#include "cli/scene_test.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "pipeline/gl_script.hpp"
+#include "scene/scene_loader.hpp"
 #include "stepper/script_test.hpp"
 
 namespace mpr::cli {
@@ -47,7 +49,13 @@ std::string indentAll(const std::string& text, const std::string& indent) {
   return o;
 }
 
-// FILE, or every .gls under DIR (sorted, so the order never depends on the file system).
+bool isScene(const std::string& path) {
+  const std::string ext = fs::path(path).extension().string();
+  return ext == ".yaml" || ext == ".yml";
+}
+
+// FILE, or every .gls and scene (.yaml, .yml) under DIR (sorted, so the
+// order never depends on the file system).
 bool collect(const std::string& input, std::vector<std::string>& paths) {
   std::error_code ec;
   if (!fs::is_directory(input, ec)) {
@@ -57,13 +65,14 @@ bool collect(const std::string& input, std::vector<std::string>& paths) {
   std::vector<std::string> found;
   for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
        it.increment(ec))
-    if (it->is_regular_file() && it->path().extension() == ".gls") found.push_back(it->path().string());
+    if (it->is_regular_file() && (it->path().extension() == ".gls" || isScene(it->path().string())))
+      found.push_back(it->path().string());
   if (ec) {
     std::cerr << "mpr test: cannot read " << input << ": " << ec.message() << "\n";
     return false;
   }
   if (found.empty()) {
-    std::cerr << "mpr test: no .gls scripts in " << input << "\n";
+    std::cerr << "mpr test: no .gls scripts or .yaml scenes in " << input << "\n";
     return false;
   }
   std::sort(found.begin(), found.end());
@@ -77,20 +86,43 @@ int runTest(const TestOptions& o) {
   std::vector<std::string> paths;
   for (const std::string& in : o.inputs)
     if (!collect(in, paths)) return 2;
-  std::vector<Script> scripts;
+  if (!o.profile.empty() && !findProfile(o.profile)) {
+    std::cerr << "mpr test: unknown profile '" << o.profile << "' (known: indigo, mesa)\n";
+    return 2;
+  }
+  // Scripts and scenes in one list, in the order given.
+  struct Item {
+    bool scene = false;
+    Script script;
+    Scene sceneData;
+  };
+  std::vector<Item> items;
   bool bad = false;
   for (const std::string& p : paths) {
+    Item item;
     try {
-      scripts.push_back(loadScript(p));
+      if (isScene(p)) {
+        item.scene = true;
+        std::vector<std::string> sets;
+        if (!o.profile.empty()) sets.push_back("render.profile=" + o.profile);
+        item.sceneData = loadSceneFile(p, sets);
+      } else {
+        item.script = loadScript(p);
+      }
+      items.push_back(std::move(item));
     } catch (const ScriptError& e) {
+      std::cerr << e.what() << "\n";
+      bad = true;
+    } catch (const SceneError& e) {
       std::cerr << e.what() << "\n";
       bad = true;
     }
   }
   if (bad) return 2;
   std::vector<HardwareProfile> profiles;
-  for (const Script& s : scripts) {
-    const std::string name = o.profile.empty() ? s.profile.value_or("indigo") : o.profile;
+  for (const Item& it : items) {
+    const std::string name = it.scene ? it.sceneData.render.profile
+                                      : (o.profile.empty() ? it.script.profile.value_or("indigo") : o.profile);
     const auto profile = findProfile(name);
     if (!profile) {
       std::cerr << "mpr test: unknown profile '" << name << "' (known: indigo, mesa)\n";
@@ -100,6 +132,7 @@ int runTest(const TestOptions& o) {
   }
 
   std::size_t passed = 0, failed = 0;
+  bool sceneErrors = false;
   std::vector<JUnitCase> cases;
   struct Difference {
     std::string name;
@@ -107,14 +140,43 @@ int runTest(const TestOptions& o) {
     std::vector<std::uint8_t> rgb;
   };
   std::vector<Difference> differences;
-  for (std::size_t i = 0; i < scripts.size(); ++i) {
-    const Script& s = scripts[i];
-    const ScriptTestResult r = runScriptTest(s, profiles[i]);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string file = items[i].scene ? items[i].sceneData.file : items[i].script.file;
     JUnitCase jc;
-    jc.name = fs::path(s.file).filename().string();
-    jc.classname = fs::path(s.file).parent_path().string();
+    jc.name = fs::path(file).filename().string();
+    jc.classname = fs::path(file).parent_path().string();
     std::replace(jc.classname.begin(), jc.classname.end(), '/', '.');
     if (jc.classname.empty()) jc.classname = ".";
+    if (items[i].scene) {
+      // A scene: its expectations, read at their passes of the render.
+      const SceneTestResult r = runSceneTest(items[i].sceneData);
+      if (r.errors.empty() && r.passed) {
+        ++passed;
+        std::cout << "ok   " << file << " (" << r.expectations << " expectation" << (r.expectations == 1 ? "" : "s")
+                  << ")\n";
+        cases.push_back(std::move(jc));
+        continue;
+      }
+      ++failed;
+      jc.outcome = JUnitCase::Outcome::Failed;
+      if (!r.errors.empty()) {
+        sceneErrors = true;
+        std::cout << "FAIL " << r.errors.front() << "\n";
+        for (std::size_t k = 1; k < r.errors.size(); ++k) std::cout << "     " << r.errors[k] << "\n";
+        jc.message = r.errors.front();
+        for (const std::string& e : r.errors) jc.text += e + "\n";
+      } else {
+        std::cout << "FAIL " << r.where << "\n" << sceneFailureText(r, "     ");
+        jc.message = r.where + ": " + r.message.substr(0, r.message.find('\n'));
+        jc.text = r.message + "\n" + r.history;
+        differences.push_back({fs::path(file).stem().string() + ".line" + std::to_string(r.line) + ".png", r.width,
+                               r.height, r.difference});
+      }
+      cases.push_back(std::move(jc));
+      continue;
+    }
+    const Script& s = items[i].script;
+    const ScriptTestResult r = runScriptTest(s, profiles[i]);
     if (r.passed) {
       ++passed;
       std::cout << "ok   " << s.file << " (" << r.probes << " probe" << (r.probes == 1 ? "" : "s") << ")\n";
@@ -145,26 +207,29 @@ int runTest(const TestOptions& o) {
     std::cerr << "mpr test: " << e.what() << "\n";
     return 2;
   }
-  return failed == 0 ? 0 : 1;
+  return sceneErrors ? 2 : failed == 0 ? 0 : 1;
 }
 
 }  // namespace
 
 void addTestCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<TestOptions>();
-  CLI::App* c = app.add_subcommand("test", "Run GL scripts with probes (@expect) as tests");
+  CLI::App* c = app.add_subcommand("test", "Run GL scripts with probes (@expect) and scenes with expect: as tests");
   c->footer(
-      "Runs every script (a folder: every .gls under it, sorted), evaluates its @expect and\n"
+      "Runs every script (a folder: every .gls and .yaml under it, sorted), evaluates its @expect and\n"
       "@expect-picture probes in order (docs/gl-script-directives.md) and prints one line per\n"
       "script: ok, or FAIL with the first probe that does not hold, the expected and found values,\n"
       "and the history of its first failing pixel up to the probe (as mpr step --pixel words it).\n"
       "Then 'N passed, N failed'. Exit status 0 when every script passes, 1 when one fails, 2 for a\n"
       "script error (every script is parsed first; nothing runs or is written then).\n"
+      "A scene (.yaml) runs as a test of its expect: list (docs/scene-format.md): one line per scene,\n"
+      "ok or FAIL with the first expectation that does not hold in the render's order, the pass it\n"
+      "was read at and its pixel's history; an after: that matched no pass is a located error (exit 2).\n"
       "--junit FILE: JUnit XML, one testcase per script. --report DIR: a difference image per failing\n"
       "probe, DIR/<script>.line<N>.png (probed pixels that hold white, those that do not red, the\n"
       "rest of the window dark grey).");
-  c->add_option("inputs", o->inputs, "GL scripts (.gls) or folders of them")->required();
-  c->add_option("--profile", o->profile, "hardware profile: indigo or mesa; overrides @profile");
+  c->add_option("inputs", o->inputs, "GL scripts (.gls), scenes (.yaml) or folders of them")->required();
+  c->add_option("--profile", o->profile, "hardware profile: indigo or mesa; overrides @profile and render.profile");
   c->add_option("--junit", o->junit, "write JUnit XML to FILE");
   c->add_option("--report", o->report, "write a difference image per failing probe into DIR");
   c->callback([o, &exitCode] { exitCode = runTest(*o); });

@@ -12,7 +12,7 @@
 #include <memory>
 
 #include "pipeline/gl_call.hpp"
-#include "pipeline/script_probe.hpp"
+#include "framebuffer/script_probe.hpp"
 
 namespace mpr {
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "framebuffer/script_probe.hpp"
 #include "util/vecmath.hpp"
 
 namespace mpr {
@@ -92,6 +93,21 @@ struct RenderSettings {
   float tessellation = 0.0f;
 };
 
+// One entry of the scene's `expect:` list (docs/scene-format.md,
+// "Expectations"): a probe, as a GL script's @expect, read at the end of the
+// `occurrence`-th pass whose label contains `after` (and, when given, runs
+// at recursion `level` inside the loop over light `light`), or at the end
+// of the render (`after: end`). algorithms/scene_expectations evaluates it.
+struct SceneExpectation {
+  int line = 0;                    // the entry's line in the scene file
+  int afterLine = 0, afterColumn = 0;  // where `after` is written
+  std::string after;
+  int occurrence = 1;
+  int level = -1, light = -1;      // -1: any
+  ScriptProbe probe;               // stencil levels already resolved (probe.expectedName keeps the name)
+  bool atEnd() const { return after == "end"; }
+};
+
 struct Scene {
   std::string file;
   Camera camera;
@@ -100,6 +116,7 @@ struct Scene {
   std::vector<SceneMaterial> materials;
   std::vector<SceneObject> objects;
   RenderSettings render;
+  std::vector<SceneExpectation> expectations;
   std::size_t triangleCount() const;
 };
 

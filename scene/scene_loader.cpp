@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -32,6 +33,7 @@ const std::vector<KeySpec> kTopKeys = {
     {"materials", "mapping name -> material", "named materials"},
     {"objects", "sequence of object", "what is drawn"},
     {"render", "mapping", "image size, recursion, effects, hardware profile"},
+    {"expect", "sequence of expectation", "probes of the buffers at named points of the 1994 algorithm"},
 };
 const std::vector<KeySpec> kCameraKeys = {
     {"position", "vec3", "eye position"}, {"look_at", "vec3", "point looked at"},
@@ -89,6 +91,25 @@ const std::vector<KeySpec> kRenderKeys = {
     {"tessellation", "number >= 0",
      "the longest edge of a lit triangle the pipeline draws (larger ones are split for GL's per-vertex lighting), "
      "world units; default 0: as modelled"},
+};
+
+const std::vector<KeySpec> kExpectKeys = {
+    {"after", "string",
+     "evaluated at the end of the pass whose label contains this text (mpr step SCENE lists the labels), or end: "
+     "the finished render"},
+    {"occurrence", "integer >= 1", "the Nth pass that matches, default 1"},
+    {"level", "integer >= 0", "only passes of recursion level N (the innermost draw_window level N)"},
+    {"light", "integer >= 0", "only passes inside the loop over light N of their draw_window"},
+    {"stencil", "[x, y] | [x, y, width, height] | all", "the stencil of a pixel, a rectangle (bottom-left x, y) or the window"},
+    {"depth", "[x, y] | [x, y, width, height] | all", "the stored depth integer (0 .. 2^24 - 1)"},
+    {"color", "[x, y] | [x, y, width, height] | all", "the colour bytes"},
+    {"accum", "[x, y] | [x, y, width, height] | all", "the four accumulation words (32767 stands for 1.0)"},
+    {"value", "integer, stencil level, [r, g, b, a]",
+     "what the pixels hold: stencil an integer or ZERO, SHAD_MIN, SHAD_ZERO, MAX with + or - n; depth an integer; "
+     "color four bytes; accum four words"},
+    {"tolerance", "integer in [0, 255]", "color: the largest difference accepted per channel, default 0"},
+    {"picture", "string of rows",
+     "stencil [x, y] only, instead of value: rows top-down, blank-separated cells (a value, . for 0, * for any)"},
 };
 
 struct Override {
@@ -208,6 +229,7 @@ class Loader {
       for (const YAML::Node& o : os) s.objects.push_back(readObject(o, materialIndex, s));
     }
     checkLimits(doc, s);
+    if (const YAML::Node e = doc["expect"]) readExpectations(e, s);
     return s;
   }
 
@@ -420,6 +442,190 @@ class Loader {
     }
   }
 
+  // ---- expect: (docs/scene-format.md, "Expectations") --------------------
+  void readExpectations(const YAML::Node& list, Scene& s) const {
+    if (!list.IsSequence()) fail(list, "expect must be a list of expectations, like - {after: end, stencil: [0, 0], value: ZERO}");
+    for (const YAML::Node& n : list) s.expectations.push_back(readExpectation(n, s));
+  }
+
+  SceneExpectation readExpectation(const YAML::Node& n, const Scene& s) const {
+    checkKeys(n, kExpectKeys, "an expectation");
+    SceneExpectation e;
+    e.line = n.Mark().line + 1;
+    if (!n["after"]) fail(n, "an expectation needs after: a text of the pass label (mpr step SCENE lists them), or end");
+    e.after = string(n["after"], "expect after");
+    e.afterLine = n["after"].Mark().line + 1;
+    e.afterColumn = n["after"].Mark().column + 1;
+    if (e.after.empty()) fail(n["after"], "expect after must not be empty");
+    for (const char* k : {"occurrence", "level", "light"})
+      if (e.atEnd() && n[k])
+        fail(n[k], std::string("expect after: end takes no ") + k + " (the finished render is one point)");
+    if (n["occurrence"]) e.occurrence = integer(n["occurrence"], "expect occurrence", 1, 1 << 30);
+    if (n["level"]) e.level = integer(n["level"], "expect level", 0, s.render.recursionDepth);
+    if (n["light"]) {
+      if (s.lights.empty()) fail(n["light"], "expect light: the scene has no lights");
+      e.light = integer(n["light"], "expect light", 0, static_cast<long>(s.lights.size()) - 1);
+    }
+    ScriptProbe& p = e.probe;
+    static const std::pair<const char*, ScriptProbe::Buffer> buffers[] = {
+        {"stencil", ScriptProbe::Buffer::Stencil}, {"depth", ScriptProbe::Buffer::Depth},
+        {"color", ScriptProbe::Buffer::Color}, {"accum", ScriptProbe::Buffer::Accum}};
+    const char* buffer = nullptr;
+    for (const auto& [name, b] : buffers) {
+      if (!n[name]) continue;
+      if (buffer) fail(n[name], std::string("an expectation probes one buffer: give ") + buffer + " or " + name + ", not both");
+      buffer = name;
+      p.buffer = b;
+    }
+    if (!buffer) fail(n, "an expectation needs the pixels it probes: stencil, depth, color or accum");
+    const std::string what = std::string("expect ") + buffer;
+    const YAML::Node at = n[buffer];
+    const bool picture = static_cast<bool>(n["picture"]);
+    if (picture && n["value"]) fail(n["picture"], "an expectation gives value or picture, not both");
+    if (!picture && !n["value"]) fail(n, "an expectation needs a value (or, for stencil [x, y], a picture)");
+    if (n["tolerance"] && p.buffer != ScriptProbe::Buffer::Color)
+      fail(n["tolerance"], "expect tolerance is for color only");
+    readRegion(at, what, s.render, p);
+    if (picture) {
+      if (p.buffer != ScriptProbe::Buffer::Stencil || p.form != ScriptProbe::Form::Pixel)
+        fail(n["picture"], "expect picture takes stencil: [x, y], the picture's bottom-left pixel");
+      readPicture(n["picture"], s.render, p);
+      return e;
+    }
+    readValue(n["value"], what, s, p);
+    if (n["tolerance"]) p.tolerance = integer(n["tolerance"], "expect tolerance", 0, 255);
+    return e;
+  }
+
+  // [x, y], [x, y, width, height] or all, inside the window.
+  void readRegion(const YAML::Node& at, const std::string& what, const RenderSettings& r, ScriptProbe& p) const {
+    const std::string usage = what + " must be [x, y], [x, y, width, height] or all";
+    if (at.IsScalar()) {
+      if (at.Scalar() != "all") fail(at, usage + ", not '" + at.Scalar() + "'");
+      p.form = ScriptProbe::Form::All;
+      p.region = {0, 0, r.width, r.height};
+      return;
+    }
+    if (!at.IsSequence() || (at.size() != 2 && at.size() != 4)) fail(at, usage);
+    const int x = integer(at[0], what + " x", 0, 1 << 30), y = integer(at[1], what + " y", 0, 1 << 30);
+    int w = 1, h = 1;
+    if (at.size() == 4) {
+      p.form = ScriptProbe::Form::Rect;
+      w = integer(at[2], what + " width", 1, 1 << 30);
+      h = integer(at[3], what + " height", 1, 1 << 30);
+    }
+    p.region = {x, y, x + w, y + h};
+    checkInWindow(at, p, r);
+  }
+
+  void checkInWindow(const YAML::Node& at, const ScriptProbe& p, const RenderSettings& r) const {
+    const PixelRect& g = p.region;
+    if (g.x1 <= r.width && g.y1 <= r.height) return;
+    const std::string window = std::to_string(r.width) + "x" + std::to_string(r.height) + " window";
+    if (p.form == ScriptProbe::Form::Pixel)
+      fail(at, "pixel (" + std::to_string(g.x0) + "," + std::to_string(g.y0) + ") is outside the " + window +
+                   " (origin bottom-left)");
+    fail(at, "the " + std::to_string(g.x1 - g.x0) + "x" + std::to_string(g.y1 - g.y0) + " region with bottom-left pixel (" +
+                 std::to_string(g.x0) + "," + std::to_string(g.y0) + ") reaches outside the " + window);
+  }
+
+  void readValue(const YAML::Node& v, const std::string& what, const Scene& s, ScriptProbe& p) const {
+    const std::string name = what + " value";
+    switch (p.buffer) {
+      case ScriptProbe::Buffer::Stencil: p.expected[0] = stencilValue(v, name, s, p.expectedName); return;
+      case ScriptProbe::Buffer::Depth: p.expected[0] = integer(v, name, 0, (1 << 24) - 1); return;
+      case ScriptProbe::Buffer::Color:
+      case ScriptProbe::Buffer::Accum: {
+        const bool color = p.buffer == ScriptProbe::Buffer::Color;
+        if (!v.IsSequence() || v.size() != 4)
+          fail(v, name + " must be " + (color ? "[r, g, b, a], four bytes 0 .. 255" : "[r, g, b, a], four words -32768 .. 32767"));
+        for (std::size_t i = 0; i < 4; ++i)
+          p.expected[i] = color ? integer(v[i], name, 0, 255) : integer(v[i], name, -32768, 32767);
+        return;
+      }
+    }
+  }
+
+  // An integer, or ZERO, SHAD_MIN, SHAD_ZERO or MAX with an optional + n or
+  // - n: the 1994 paper's levels for the profile's stencil width (the
+  // formula of algorithms/stencil_levels.hpp: SHAD_MIN one-half, SHAD_ZERO
+  // three-quarters of the range).
+  std::int64_t stencilValue(const YAML::Node& v, const std::string& what, const Scene& s, std::string& named) const {
+    const HardwareProfile profile = *findProfile(s.render.profile);
+    const long max = static_cast<long>(profile.stencilMax());
+    if (!v.IsScalar()) fail(v, what + " must be an integer or a stencil level (ZERO, SHAD_MIN, SHAD_ZERO, MAX, + or - n)");
+    const std::string text = v.Scalar();
+    if (!text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-' || text[0] == '+'))
+      return integer(v, what, 0, max);
+    std::size_t i = 0;
+    while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_')) ++i;
+    const std::string level = text.substr(0, i);
+    const long range = max + 1;
+    static const std::vector<std::string_view> names = {"ZERO", "SHAD_MIN", "SHAD_ZERO", "MAX"};
+    long base = 0;
+    if (level == "ZERO") base = 0;
+    else if (level == "SHAD_MIN") base = range / 2;
+    else if (level == "SHAD_ZERO") base = range / 4 * 3;
+    else if (level == "MAX") base = max;
+    else {
+      const std::string best = closestMatch(level, names, 3);
+      fail(v, what + " '" + text + "' is not an integer or a stencil level" +
+                  (best.empty() ? " (known: ZERO, SHAD_MIN, SHAD_ZERO, MAX)" : "; did you mean '" + best + "'?"));
+    }
+    while (i < text.size() && text[i] == ' ') ++i;
+    long offset = 0;
+    char sign = 0;
+    if (i < text.size()) {
+      sign = text[i++];
+      while (i < text.size() && text[i] == ' ') ++i;
+      const std::string digits = text.substr(i);
+      if ((sign != '+' && sign != '-') || digits.empty() || digits.size() > 9 ||
+          digits.find_first_not_of("0123456789") != std::string::npos)
+        fail(v, what + " '" + text + "' must be a level with an optional + n or - n, like SHAD_ZERO + 1");
+      offset = std::stol(digits) * (sign == '-' ? -1 : 1);
+    }
+    const long value = base + offset;
+    named = level + (sign ? std::string(" ") + sign + " " + std::to_string(offset < 0 ? -offset : offset) : "");
+    if (value < 0 || value > max)
+      fail(v, what + " " + named + " = " + std::to_string(value) + " is outside the " + std::to_string(profile.stencilBits) +
+                  "-bit stencil of profile '" + profile.name + "' (0 .. " + std::to_string(max) + ")");
+    return value;
+  }
+
+  // Rows top-down (as framebuffer/stencil_picture.hpp reads them): cells a
+  // decimal 0 .. 255, . for 0, * for any value.
+  void readPicture(const YAML::Node& n, const RenderSettings& r, ScriptProbe& p) const {
+    if (!n.IsScalar()) fail(n, "expect picture must be a string of rows, like picture: |");
+    std::istringstream lines(n.Scalar());
+    for (std::string line; std::getline(lines, line);) {
+      std::istringstream cells(line);
+      std::vector<int> row;
+      std::string text;
+      for (std::string c; cells >> c;) {
+        int v = -1;
+        if (c == ".") v = 0;
+        else if (c != "*") {
+          const bool digits = c.size() <= 3 && c.find_first_not_of("0123456789") == std::string::npos;
+          v = digits ? std::stoi(c) : 256;
+          if (v > 255) fail(n, "expect picture cell '" + c + "' is not a stencil value 0 .. 255, '.' or '*'");
+        }
+        row.push_back(v);
+        text += (text.empty() ? "" : " ") + c;
+      }
+      if (row.empty()) continue;
+      if (!p.cells.empty() && row.size() != p.cells[0].size())
+        fail(n, "expect picture row " + std::to_string(p.cells.size() + 1) + " has " + std::to_string(row.size()) +
+                    " cells, the first row has " + std::to_string(p.cells[0].size()));
+      p.cells.push_back(std::move(row));
+      p.picture += text + "\n";
+    }
+    if (p.cells.empty()) fail(n, "expect picture has no rows");
+    p.form = ScriptProbe::Form::Picture;
+    p.region.x1 = p.region.x0 + static_cast<int>(p.cells[0].size());
+    p.region.y1 = p.region.y0 + static_cast<int>(p.cells.size());
+    checkInWindow(n, p, r);
+  }
+
   void checkLimits(const YAML::Node& doc, const Scene& s) const {
     const HardwareProfile p = *findProfile(s.render.profile);
     // 1994 paper: recursion levels live below SHAD_MIN (half the stencil
@@ -508,7 +714,8 @@ std::string describeSceneFormat() {
   section("lights[]", "array of object", kLightKeys, false);
   section("materials.<name>", "object", kMaterialKeys, false);
   section("objects[]", "array of object", kObjectKeys, false);
-  section("render", "object", kRenderKeys, true);
+  section("render", "object", kRenderKeys, false);
+  section("expect[]", "array of object", kExpectKeys, true);
   o << "  }\n}\n";
   return o.str();
 }

@@ -24,7 +24,7 @@
 #include "pipeline/gl_script.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "pipeline/gl_trace_writer.hpp"
-#include "pipeline/script_probe.hpp"
+#include "framebuffer/script_probe.hpp"
 
 #if defined(MPR_WITH_ALGORITHMS)
 #include "algorithms/apply_stencil.hpp"

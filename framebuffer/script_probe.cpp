@@ -1,4 +1,4 @@
-#include "pipeline/script_probe.hpp"
+#include "framebuffer/script_probe.hpp"
 
 #include <cstdlib>
 
@@ -52,6 +52,7 @@ std::string point(int x, int y) { return "(" + std::to_string(x) + "," + std::to
 
 std::string expectedText(const ScriptProbe& p) {
   std::string o = valueText(p.buffer, p.expected);
+  if (!p.expectedName.empty()) o = p.expectedName + " = " + o;
   if (p.tolerance > 0) o += " within " + std::to_string(p.tolerance);
   return o;
 }
