@@ -186,8 +186,10 @@ class WindowRenderer {
     for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
       const RefFace& face = faces_[static_cast<std::size_t>(f)];
       if (f == cam.throughFace) continue;  // a planar face cannot see itself (eq. 5: n - 1)
-      // Faces seen from behind show nothing (culling on).
-      if (plan_.cull && !(face.side(eye) > 0.0)) {
+      // Mirrors seen from behind show nothing (culling on); glass has two
+      // sides and is looked through from either (issue 12, bug 2).
+      const bool behind = !(face.side(eye) > 0.0);
+      if (plan_.cull && behind && !face.refracts()) {
         ++counts_.facesSkipped;
         continue;
       }
@@ -198,7 +200,7 @@ class WindowRenderer {
       // No pixel of the face survives the depth and stencil tests: nothing
       // to reflect (culling on; the counter plays an occlusion query's part).
       if (plan_.cull) gl_.beginFragmentCount();
-      drawFaceMask(cam, face);
+      drawFaceMask(cam, face, behind && face.refracts());
       if (plan_.cull && gl_.endFragmentCount() == 0) {
         ++counts_.facesSkipped;
         path_.pop_back();
@@ -250,7 +252,7 @@ class WindowRenderer {
       clearMaskToFar(next.fog ? next.fogColor : Vec3(0.0f));
       draw_window(next);
       pass("ref face", "blend the face's own colour | two renderings through destination alpha");
-      finishFace(cam, face);
+      finishFace(cam, face, behind && face.refracts());
       pass("apply_stencil", "face back to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)");
       apply_stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Replace, level}, lv_);
       path_.pop_back();
@@ -324,7 +326,7 @@ class WindowRenderer {
 
   // draw_face(ref_face): the face's visible pixels (depth test, no colour or
   // depth writes) take the stencil op set by the caller.
-  void drawFaceMask(const ViewCamera& cam, const RefFace& face) {
+  void drawFaceMask(const ViewCamera& cam, const RefFace& face, bool fromBehind) {
     gl_scene_.setupView(cam);
     gl_.colorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     gl_.depthMask(GL_FALSE);
@@ -333,7 +335,7 @@ class WindowRenderer {
     gl_.enable(GL_CULL_FACE);
     gl_.disable(GL_LIGHTING);
     gl_.disable(GL_BLEND);
-    gl_scene_.drawPolygon(face, false);
+    gl_scene_.drawPolygon(face, false, fromBehind);
     gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl_.depthMask(GL_TRUE);
   }
@@ -369,7 +371,7 @@ class WindowRenderer {
   // draws the face lit (ambient and up to eight lights at once) blended as
   // lit * dst_alpha + reflection * (1 - dst_alpha). Depth ALWAYS puts the
   // face's own depth back. (1994 paper, "Object attributes and translucency".)
-  void finishFace(const ViewCamera& cam, const RefFace& face) {
+  void finishFace(const ViewCamera& cam, const RefFace& face, bool fromBehind) {
     const SceneMaterial& m = s_.materials[static_cast<std::size_t>(s_.objects[static_cast<std::size_t>(face.object)].material)];
     stencil(gl_, {PaperCompare::Equal, lv_.zero, PaperPass::Keep, lv_.zero}, lv_);
     gl_scene_.setupView(cam);
@@ -382,14 +384,14 @@ class WindowRenderer {
     gl_.depthMask(GL_FALSE);
     const float through = m.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
     gl_.color4f(0.0f, 0.0f, 0.0f, 1.0f - through);
-    gl_scene_.drawPolygon(face, false);
+    gl_scene_.drawPolygon(face, false, fromBehind);
     gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl_.depthMask(GL_TRUE);
     gl_.enable(GL_BLEND);
     gl_.blendFunc(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA);
     gl_scene_.enableAllLights();
     gl_scene_.setFullMaterial(m);
-    gl_scene_.drawPolygon(face, true);
+    gl_scene_.drawPolygon(face, true, fromBehind);
     gl_scene_.disableExtraLights();
     gl_.disable(GL_BLEND);
   }

@@ -135,11 +135,16 @@ void SceneGL::drawTriangles(const Mesh& mesh) {
   gl_.end();
 }
 
-void SceneGL::drawPolygon(const RefFace& face, bool withNormal) {
+void SceneGL::drawPolygon(const RefFace& face, bool withNormal, bool fromBehind) {
+  // From behind (glass has two sides), the polygon turned round: reversed
+  // corners, so it stays front-facing under GL_CULL_FACE, and the normal
+  // of the side the eye sees, so the light on that side lights it.
+  const DVec3 n = fromBehind ? -face.normal : face.normal;
+  const std::size_t k = face.polygon.size();
   gl_.begin(GL_POLYGON);
-  for (const Vec3& p : face.polygon) {
-    if (withNormal)
-      gl_.normal3f(static_cast<float>(face.normal.x), static_cast<float>(face.normal.y), static_cast<float>(face.normal.z));
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vec3& p = face.polygon[fromBehind ? (k - i) % k : i];
+    if (withNormal) gl_.normal3f(static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z));
     gl_.vertex3f(p.x, p.y, p.z);
   }
   gl_.end();

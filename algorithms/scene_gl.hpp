@@ -33,7 +33,7 @@ class SceneGL {
   void setFullMaterial(const SceneMaterial& m);
   void setMaterial(const SceneMaterial& m, bool ambientPass);
   void drawTriangles(const Mesh& mesh);
-  void drawPolygon(const RefFace& face, bool withNormal);
+  void drawPolygon(const RefFace& face, bool withNormal, bool fromBehind = false);
   double aspect() const;
 
  private:

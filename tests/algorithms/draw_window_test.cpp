@@ -204,3 +204,37 @@ render: {width: 32, height: 24, recursion_depth: 0}
 
 }  // namespace
 }  // namespace mpr
+
+namespace mpr {
+namespace {
+
+// Issue 12, bug 2: glass has two sides. The camera behind a glass quad (it
+// faces +z, the eye is at z = -4) looks through it at an emitting square:
+// with ior 1 the view through is the plain view, blended through
+// destination alpha: alpha = 1 - T = 0.5 is stored as round(127.5) = 128,
+// so the view through (255) is weighted by 255 - 128 = 127: 255 * 127 / 255
+// = 127, and the face's lit colour (diffuse 0, no light) adds 0. Skipped as
+// seen from behind, the square showed at 255.
+TEST(DrawWindow, GlassIsLookedThroughFromBehind) {
+  const std::string text = R"(
+camera: {position: [0, 0, -4], look_at: [0, 0, 0], fov: 40, near: 0.1, far: 20}
+ambient: [0, 0, 0]
+materials:
+  glass: {kind: refractive, diffuse: [0, 0, 0], ior: 1, transmittance: 0.5}
+  lamp:  {diffuse: [0, 0, 0], emission: [1, 1, 1]}
+objects:
+  - {name: glass, primitive: quad, scale: 2, material: glass}
+  - {name: lamp, primitive: quad, translate: [0, 0, 2], rotate: [180, 0, 1, 0], scale: 3, material: lamp}
+render: {width: 32, height: 24, recursion_depth: 1}
+)";
+  const Scene s = loadSceneText(text, "s.yaml");
+  GLContext gl(32, 24, indigoProfile());
+  GLCommandStream stream(gl, false);
+  const RenderResult r = renderScene(s, stream);
+  EXPECT_EQ(r.counts.viewsAtLevel[1], 1);
+  EXPECT_EQ(gl.colorAt(16, 12)[0], 127);
+  EXPECT_EQ(gl.colorAt(16, 12)[1], 127);
+}
+
+}  // namespace
+}  // namespace mpr

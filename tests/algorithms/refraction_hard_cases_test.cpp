@@ -470,8 +470,12 @@ TEST(RefractionHardCases, RendersAroundTheCriticalAngleFromInside) {
     for (const auto& [eye, mirror] : {std::pair{flip->refracts, false}, std::pair{flip->reflects, true}}) {
       s.camera.position = eye;
       s.camera.lookAt = Vec3(0.0f);
+      // Glass has two sides: seen from behind it is looked through with
+      // culling on too (issue 12, bug 2; it used to be skipped).
       const Checked culled = expectCleanRender(s, true, material);
-      EXPECT_EQ(culled.result.counts.viewsAtLevel[1], 0);  // seen from behind: skipped
+      EXPECT_EQ(culled.result.counts.viewsAtLevel[1], 1);
+      EXPECT_EQ(culled.mappedViews > 0, !mirror);
+      EXPECT_EQ(culled.mirroredViews > 0, mirror);
       const Checked c = expectCleanRender(s, false, material);
       EXPECT_EQ(c.result.counts.viewsAtLevel[1], 1);
       EXPECT_EQ(c.mappedViews > 0, !mirror);
