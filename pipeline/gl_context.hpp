@@ -76,8 +76,9 @@ class GLContext {
   void colorMask(bool r, bool g, bool b, bool a);
   void depthMask(bool flag);
   void stencilMask(std::uint32_t mask);
-  void finish() {}
-  void flush() {}
+  // Nothing to wait for; inside glBegin/glEnd they are GL_INVALID_OPERATION (as Mesa).
+  void finish() { checkOutsideBeginEnd(); }
+  void flush() { checkOutsideBeginEnd(); }
 
   // --- per-fragment state ---------------------------------------------------
   void enable(GLenumValue cap) { setCapability(cap, true); }

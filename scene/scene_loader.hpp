@@ -2,17 +2,27 @@
 // Scene files (YAML, docs/scene-format.md) to the scene model, with errors a
 // person can act on: FILE:LINE:COLUMN, what was expected, and the closest key
 // for a misspelled one.
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
 #include "scene/scene.hpp"
+#include "util/printable_text.hpp"
 
 namespace mpr {
+
+// The largest scene file read (a regular file only): 16 MiB; meshes live in
+// their own files.
+inline constexpr std::uint64_t kMaxSceneBytes = std::uint64_t{16} << 20;
+// The most triangles a scene may hold, all objects together (aliases repeat
+// an object for free in the file): 24 Mi, one 4096-division sphere or one
+// 1024-division box and more.
+inline constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{24} << 20;
 
 class SceneError : public std::runtime_error {
  public:
   SceneError(const std::string& file, int line, int column, const std::string& message)
-      : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message) {}
+      : std::runtime_error(printableText(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message)) {}
 };
 
 // Loads and validates a scene file. `overrides` are "key.path=value" pairs
