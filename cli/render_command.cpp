@@ -47,6 +47,7 @@ struct RenderOptions {
   bool dumpGiven = false, traceGiven = false, statsGiven = false;  // --dump '' is an error, not "none"
   bool describe = false;
   bool noCull = false;
+  bool confine = false;
   std::uint64_t maxPasses = 1000000;
 };
 
@@ -90,7 +91,7 @@ int runRender(const RenderOptions& o) {
   }
   Scene scene;
   try {
-    scene = loadCommandScene(o.scene, o.sets, o.width, o.height);
+    scene = loadCommandScene(o.scene, o.sets, o.width, o.height, {}, o.confine);
   } catch (const SceneError& e) {
     std::cerr << e.what() << "\n";
     return 2;
@@ -182,6 +183,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   c->add_option("--max-passes", o->maxPasses,
                  "refuse a render of more passes (views, lit and shadow passes; default 1000000)")
       ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
+  c->add_flag("--confine", o->confine,
+              "refuse mesh files outside the scene's folder (absolute paths, '..', links out), for scenes "
+              "someone else wrote");
   c->add_flag("--no-cull", o->noCull, "recurse into every mirror face, even those seen from behind or hidden");
   c->add_flag("--describe-format", o->describe, "print a JSON Schema-like description of the scene format");
   c->callback([o, dump, trace, stats, &exitCode] {

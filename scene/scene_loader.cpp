@@ -94,7 +94,8 @@ struct Override {
 
 class Loader {
  public:
-  Loader(std::string file, std::vector<Override> overrides) : file_(std::move(file)), overrides_(std::move(overrides)) {}
+  Loader(std::string file, std::vector<Override> overrides, bool confine)
+      : file_(std::move(file)), overrides_(std::move(overrides)), confine_(confine) {}
 
   [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
     // A value that came from --set has no place in the file: name the option.
@@ -366,6 +367,14 @@ class Loader {
     } else {
       const std::string rel = string(n["mesh"], where + " mesh");
       const std::filesystem::path path = std::filesystem::path(file_).parent_path() / rel;
+      if (confine_) {
+        std::error_code ec;
+        const auto folder = std::filesystem::weakly_canonical(std::filesystem::absolute(std::filesystem::path(file_).parent_path()), ec);
+        const auto mesh = std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
+        const auto inside = mesh.lexically_relative(folder);
+        if (ec || std::filesystem::path(rel).is_absolute() || inside.empty() || *inside.begin() == "..")
+          fail(n["mesh"], where + " mesh '" + rel + "' lies outside the scene's folder, which --confine refuses");
+      }
       try {
         o.mesh = loadMeshFile(path.string());
       } catch (const std::exception& e) {
@@ -459,6 +468,7 @@ class Loader {
  private:
   std::string file_;
   std::vector<Override> overrides_;
+  bool confine_ = false;                  // meshes only from inside the scene's folder
   mutable std::uint64_t triangles_ = 0;  // the scene's so far, for the budget
 };
 
@@ -492,7 +502,8 @@ Override applyOverride(YAML::Node& doc, const std::string& kv) {
 
 }  // namespace
 
-Scene loadSceneText(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
+Scene loadSceneText(const std::string& text, const std::string& file, const std::vector<std::string>& overrides,
+                    bool confine) {
   YAML::Node doc;
   try {
     doc = YAML::Load(text);
@@ -502,20 +513,20 @@ Scene loadSceneText(const std::string& text, const std::string& file, const std:
   std::vector<Override> applied;
   for (const std::string& kv : overrides) applied.push_back(applyOverride(doc, kv));
   try {
-    return Loader(file, applied).load(doc);
+    return Loader(file, applied, confine).load(doc);
   } catch (const YAML::Exception& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
   }
 }
 
-Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides, bool confine) {
   std::string text;
   try {
     text = readInputFile(path, kMaxSceneBytes, "the scene file");
   } catch (const std::runtime_error& e) {
     throw SceneError(path, 0, 0, e.what());
   }
-  return loadSceneText(text, path, overrides);
+  return loadSceneText(text, path, overrides, confine);
 }
 
 std::string describeSceneFormat() {

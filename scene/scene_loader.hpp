@@ -27,9 +27,15 @@ class SceneError : public std::runtime_error {
 
 // Loads and validates a scene file. `overrides` are "key.path=value" pairs
 // applied to the document before it is read (mpr render --set).
-Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
+//
+// Mesh paths are relative to the scene file's folder; absolute paths and
+// paths through ".." are read as given, unless `confine` is set (mpr render
+// --confine, for services that render scenes they did not write): then any
+// mesh outside the scene's folder (after resolving links) is refused.
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {}, bool confine = false);
 // The same from text; `file` names it in messages and anchors relative mesh paths.
-Scene loadSceneText(const std::string& text, const std::string& file, const std::vector<std::string>& overrides = {});
+Scene loadSceneText(const std::string& text, const std::string& file, const std::vector<std::string>& overrides = {},
+                    bool confine = false);
 
 // The embedded default scene (a room with a mirror, a glass pane, a cube, a
 // sphere and one light) as YAML text.

@@ -24,7 +24,7 @@ while IFS=$'\t' read -r name status fragment command; do
   fi
   n=$((n + 1))
   W="$ROOT/$name"
-  mkdir -p "$W/out"
+  mkdir -p "$W/out" "$W/in"
   echo keep > "$W/out/existing.png"
   echo victim > "$W/victim"
   before="$(state "$W")"
@@ -34,8 +34,7 @@ while IFS=$'\t' read -r name status fragment command; do
   ((rc == status)) || fail "$name: exit status $rc, expected $status: ${out:0:400}"
   [[ "$out" == *"$fragment"* ]] || fail "$name: output lacks '$fragment': ${out:0:400}"
   # Temporary files or folders an mpr run left behind would show here too.
-  rm -f "$W/big.yaml" "$W/long.gls" "$W/many.yaml" "$W/fifo.gls" "$W/fifo.off" "$W/mesh_fifo.yaml" "$W"/a*.yaml
-  rmdir "$W/tdir" "$W/look" 2>/dev/null; rm -rf "$W/look"
+  rm -rf "$W/in" && mkdir "$W/in"
   after="$(state "$W")"
   [[ "$after" == "$before" ]] || fail "$name: files changed: $(diff <(echo "$before") <(echo "$after") | head -8)"
 done < "$H/cases.tsv"
