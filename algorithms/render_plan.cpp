@@ -7,6 +7,7 @@
 #include "algorithms/ref_light.hpp"
 #include "algorithms/shadow_pass.hpp"
 #include "framebuffer/profile.hpp"
+#include "util/saturating.hpp"
 
 namespace mpr {
 
@@ -17,33 +18,38 @@ std::uint64_t RenderPlan::predictedViewsAtLevel(int level) const {
   if (!reflections || level > recursionDepth) return 0;
   // 1994 eq. (5): n (n - 1)^(d - 1) renderings at depth d; a planar face
   // never sees itself, so each view recurses into the other n - 1 faces.
-  std::uint64_t v = n * static_cast<std::uint64_t>(refFaces);
-  for (int k = 1; k < level; ++k) v *= static_cast<std::uint64_t>(refFaces - 1);
+  std::uint64_t v = saturatingMul(n, static_cast<std::uint64_t>(refFaces));
+  for (int k = 1; k < level && v != kSaturated; ++k) v = saturatingMul(v, static_cast<std::uint64_t>(refFaces - 1));
   return v;
 }
 
 std::uint64_t RenderPlan::predictedViews() const {
   std::uint64_t total = 0;
-  for (int l = 0; l <= recursionDepth; ++l) total += predictedViewsAtLevel(l);
+  for (int l = 0; l <= recursionDepth; ++l) total = saturatingAdd(total, predictedViewsAtLevel(l));
   return total;
 }
 
 namespace {
 std::uint64_t shadowedViews(const RenderPlan& p) {
   std::uint64_t views = 0;
-  for (int l = 0; l <= std::min(p.shadowDepth, p.recursionDepth); ++l) views += p.predictedViewsAtLevel(l);
+  for (int l = 0; l <= std::min(p.shadowDepth, p.recursionDepth); ++l)
+    views = saturatingAdd(views, p.predictedViewsAtLevel(l));
   return p.shadows ? views : 0;
 }
 }  // namespace
 
 std::uint64_t RenderPlan::predictedShadowPasses() const {
   // draw_all_shadows per light, and draw_ref_shadows per reflected light.
-  return shadowedViews(*this) * static_cast<std::uint64_t>(lights + reflectedLights);
+  return saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(lights + reflectedLights));
 }
 
 std::uint64_t RenderPlan::predictedLightPasses() const {
-  return predictedViews() * static_cast<std::uint64_t>(lights) +
-         shadowedViews(*this) * static_cast<std::uint64_t>(reflectedLights);
+  return saturatingAdd(saturatingMul(predictedViews(), static_cast<std::uint64_t>(lights)),
+                       saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(reflectedLights)));
+}
+
+std::uint64_t RenderPlan::predictedPasses() const {
+  return saturatingAdd(saturatingAdd(predictedViews(), predictedLightPasses()), predictedShadowPasses());
 }
 
 double RenderPlan::paperEq7ShadowGenerations() const {
@@ -114,14 +120,14 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
       << (p.shadows ? ", shadows in views up to level " + std::to_string(p.shadowDepth) : std::string()) << "\n";
   for (const std::string& n : p.notes) o << "  left out: " << n << "\n";
   o << "predicted (culling off):\n";
-  o << "  views (scene renderings): " << p.predictedViews();
+  o << "  views (scene renderings): " << countText(p.predictedViews());
   if (p.reflections) {
     o << " =";
-    for (int l = 0; l <= p.recursionDepth; ++l) o << (l ? " + " : " ") << p.predictedViewsAtLevel(l);
+    for (int l = 0; l <= p.recursionDepth; ++l) o << (l ? " + " : " ") << countText(p.predictedViewsAtLevel(l));
     o << "  (per level; 1994 eq. (5): n (n-1)^(d-1))";
   }
-  o << "\n  lit passes: " << p.predictedLightPasses() << "\n";
-  o << "  shadow-volume passes: " << p.predictedShadowPasses() << "\n";
+  o << "\n  lit passes: " << countText(p.predictedLightPasses()) << "\n";
+  o << "  shadow-volume passes: " << countText(p.predictedShadowPasses()) << "\n";
   o << "  1997 eq. (7), shadow generations per light: " << p.paperEq7ShadowGenerations()
     << "; eq. (8), images: " << p.paperEq8Images() << " (the papers' order-of-growth estimates)\n";
   o << "culling " << (p.cull ? "on: faces seen from behind or hidden are skipped, counts never exceed these"

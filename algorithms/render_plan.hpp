@@ -30,11 +30,13 @@ struct RenderPlan {
 
   // Exact counts for this implementation with culling off: views (scene
   // renderings: the camera plus every virtual camera), lit passes and
-  // shadow-volume passes. The paper's estimates are given beside them.
+  // shadow-volume passes. The paper's estimates are given beside them. The
+  // counts saturate (util/saturating.hpp) instead of wrapping.
   std::uint64_t predictedViews() const;
   std::uint64_t predictedViewsAtLevel(int level) const;  // 1994 eq. (5) for level >= 1
   std::uint64_t predictedShadowPasses() const;           // views up to shadowDepth x lights
   std::uint64_t predictedLightPasses() const;            // views x lights
+  std::uint64_t predictedPasses() const;                 // the three above together (mpr render --max-passes)
   double paperEq7ShadowGenerations() const;               // 1997 eq. (7), per light
   double paperEq8Images() const;                          // 1997 eq. (8)
 };

@@ -58,7 +58,7 @@ class AccuracyRun {
     report_.width = base_.render.width;
     report_.height = base_.render.height;
     report_.repeat = o_.repeat;
-    if (const std::string p = pageFolderProblem(o_.report, kGenerator, "report.html"); !p.empty())
+    if (const std::string p = pageFolderProblem(o_.report, kGenerator); !p.empty())
       throw UserError("mpr accuracy: --report " + p);
     loadSettings(keys);
     Rgb8Image reference = referenceFromFile();
@@ -247,7 +247,7 @@ class AccuracyRun {
     files_.emplace_back("results.csv", resultsCsv(report_));
     files_.emplace_back("results.json", resultsJson(report_));
     files_.emplace_back("report.html", reportHtml(report_, svg));
-    writePageFolder(o_.report, files_);
+    writePageFolder(o_.report, kGenerator, files_);
     if (!o_.quiet) {
       std::cerr << "accuracy: " << report_.rows.size() << " settings of " << report_.scene << "; single pass "
                 << fixed(report_.singlePass.error.rmsPercent, 2) << " % RMS; report in " << o_.report << "/report.html\n";
@@ -284,8 +284,8 @@ void addAccuracyCommand(CLI::App& app, int& exitCode) {
   c->add_option("--bounces", o->bounces, "reference specular bounces (default: until below 1/512)");
   c->add_option("--threads", o->threads, "reference threads (default: all)");
   c->add_option("--repeat", o->repeat, "pipeline runs per setting; the median is reported (default 3)");
-  c->add_option("--width", o->width, "image width (overrides render.width)");
-  c->add_option("--height", o->height, "image height (overrides render.height)");
+  c->add_option("--width", o->width, "image width (overrides render.width)")->check(CLI::Range(1, 16384));
+  c->add_option("--height", o->height, "image height (overrides render.height)")->check(CLI::Range(1, 16384));
   c->add_option("--set", o->sets, "override a scene value for every setting: key.path=value (repeatable)");
   c->add_option("--budget", o->budget, "refuse a sweep estimated to take longer, in seconds (default 600)");
   c->add_option("--report", o->report, "folder to write the report to")->required();

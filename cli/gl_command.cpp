@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/output_set.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
 #include "pipeline/gl_context.hpp"
@@ -22,6 +23,7 @@ struct GlOptions {
   std::string script;
   std::string profile;
   std::string dumpDir;
+  bool dumpGiven = false;  // --dump '' is an error, not "no dump"
   bool quiet = false;
 };
 
@@ -37,6 +39,12 @@ int runGl(const GlOptions& o) {
   const auto profile = findProfile(profileName);
   if (!profile) {
     std::cerr << "mpr gl: unknown profile '" << profileName << "' (known: indigo, mesa)\n";
+    return 2;
+  }
+  OutputSet outputs("gl");
+  if (o.dumpGiven) outputs.addFolder("--dump", o.dumpDir);
+  if (const std::string problem = outputs.problem(); !problem.empty()) {
+    std::cerr << problem << "\n";
     return 2;
   }
   std::unique_ptr<GLContext> gl;
@@ -56,7 +64,7 @@ int runGl(const GlOptions& o) {
   hooks.onGLError = [&](const ScriptCommand& c, std::uint32_t e) {
     std::cerr << script.file << ":" << glErrorReport(c, e) << "\n";
   };
-  if (!o.dumpDir.empty())
+  if (o.dumpGiven)
     hooks.onSnapshot = [&](const ScriptCommand& c, const GLContext& ctx) {
       for (NamedBytes& nb : framebufferNpyDumps(ctx.framebuffer()))
         files.push_back({c.label + "-" + nb.name + ".npy", std::move(nb.bytes)});
@@ -78,13 +86,15 @@ int runGl(const GlOptions& o) {
     return 1;
   }
 
-  if (!o.dumpDir.empty()) {
+  if (o.dumpGiven) {
+    // Every file to its temporary first, then all renamed: a full disk or a
+    // name the file system refuses leaves no part of a dump.
     try {
-      std::filesystem::create_directories(o.dumpDir);
       for (NamedBytes& nb : framebufferNpyDumps(gl->framebuffer()))
         files.push_back({nb.name + ".npy", std::move(nb.bytes)});
-      for (const NamedBytes& f : files) writeFileAtomically((std::filesystem::path(o.dumpDir) / f.name).string(), f.bytes);
-      writeColorImage(gl->framebuffer(), (std::filesystem::path(o.dumpDir) / "color.png").string());
+      for (const NamedBytes& f : files) outputs.write((std::filesystem::path(o.dumpDir) / f.name).string(), f.bytes);
+      writeColorImage(gl->framebuffer(), outputs.open((std::filesystem::path(o.dumpDir) / "color.png").string()));
+      outputs.commit();
     } catch (const std::exception& e) {
       std::cerr << "mpr gl: " << e.what() << "\n";
       return 1;
@@ -119,9 +129,12 @@ void addGlCommand(CLI::App& app, int& exitCode) {
       "NAME-<buffer>.npy for every @snapshot NAME.");
   gl->add_option("script", opts->script, "GL script to run")->required();
   gl->add_option("--profile", opts->profile, "hardware profile: indigo (default) or mesa; overrides @profile");
-  gl->add_option("--dump", opts->dumpDir, "write the final buffers (and snapshots) into this folder");
+  auto dump = gl->add_option("--dump", opts->dumpDir, "write the final buffers (and snapshots) into this folder");
   gl->add_flag("-q,--quiet", opts->quiet, "print no summary line");
-  gl->callback([opts, &exitCode] { exitCode = runGl(*opts); });
+  gl->callback([opts, dump, &exitCode] {
+    opts->dumpGiven = dump->count() > 0;
+    exitCode = runGl(*opts);
+  });
 }
 
 }  // namespace mpr::cli

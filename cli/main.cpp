@@ -2,6 +2,11 @@
 // calls the libraries.
 #include <CLI/CLI.hpp>
 
+#include <csignal>
+#include <exception>
+#include <iostream>
+#include <new>
+
 #include "cli/accuracy_command.hpp"
 #include "cli/conform_command.hpp"
 #include "cli/gl_command.hpp"
@@ -25,11 +30,22 @@ int main(int argc, char** argv) {
   mpr::cli::addInfoCommand(app, exitCode);
   mpr::cli::addReferenceCommand(app, exitCode);
   mpr::cli::addAccuracyCommand(app, exitCode);
+  // Past `ulimit -f` a write fails with EFBIG (and the output is left as it
+  // was) instead of the process being killed half-way through a file.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
+  } catch (const std::bad_alloc&) {
+    // The commands check sizes before allocating; this is the last line
+    // (a memory limit below what a checked size needs): no abort, no output.
+    std::cerr << "mpr: out of memory (the input needs more memory than this process may use)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "mpr: " << e.what() << "\n";
+    return 1;
   }
   return exitCode;
 }

@@ -3,7 +3,8 @@
 // folder beside it and renamed into place at the end, so a failed or
 // interrupted run leaves no half page: either the old folder or the new one.
 // An existing folder is only replaced when it is empty or holds an earlier
-// page (its page names `generator`), never a user's other files.
+// page: the marker file .mpr-page that MPR writes (naming the generator and
+// every file), and nothing else; never a user's other files.
 #include <string>
 #include <string_view>
 #include <utility>
@@ -14,12 +15,11 @@ namespace mpr::cli {
 using PageFile = std::pair<std::string, std::string>;  // name in the folder, bytes
 
 // Why `dir` cannot take the page, or empty when it can. An earlier page is
-// recognised by the generator tag in its `page` file (index.html for the
-// stepper, report.html for mpr accuracy).
-std::string pageFolderProblem(const std::string& dir, std::string_view generator,
-                              std::string_view page = "index.html");
+// recognised only by its marker (written by `generator`, e.g. "mpr step").
+std::string pageFolderProblem(const std::string& dir, std::string_view generator);
 
-// Writes every file, then puts the folder in place. Throws std::runtime_error.
-void writePageFolder(const std::string& dir, const std::vector<PageFile>& files);
+// Writes every file and the marker, then puts the folder in place. Throws
+// std::runtime_error.
+void writePageFolder(const std::string& dir, std::string_view generator, const std::vector<PageFile>& files);
 
 }  // namespace mpr::cli

@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli/output_set.hpp"
 #include "cli/scene_arguments.hpp"
 #include "reference/reference_image.hpp"
 #include "reference/reference_renderer.hpp"
@@ -46,6 +47,12 @@ int runReference(const ReferenceCommandOptions& o) {
     std::cerr << problem << "\n";
     return 2;
   }
+  OutputSet outputs("reference");
+  outputs.addFile("-o", o.output);
+  if (const std::string problem = outputs.problem(); !problem.empty()) {
+    std::cerr << problem << "\n";
+    return 2;
+  }
   ReferenceOptions options;
   options.samplesPerPixel = o.spp;
   options.bounces = o.bounces;
@@ -62,9 +69,8 @@ int runReference(const ReferenceCommandOptions& o) {
   const ReferenceImage image = renderReference(scene, options);
   if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
   try {
-    const std::filesystem::path out(o.output);
-    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-    writeReferenceImage(image, o.output);
+    writeReferenceImage(image, outputs.open(o.output));
+    outputs.commit();
   } catch (const std::exception& e) {
     std::cerr << "mpr reference: " << e.what() << "\n";
     return 1;
@@ -95,8 +101,8 @@ void addReferenceCommand(CLI::App& app, int& exitCode) {
   c->add_option("--bounces", o->bounces, "specular faces a path may pass (default: until its weight is below 1/512)")
       ->check(CLI::Range(-1, 100));
   c->add_option("--threads", o->threads, "worker threads (default: every hardware thread)")->check(CLI::Range(0, 1024));
-  c->add_option("--width", o->width, "image width (overrides render.width)");
-  c->add_option("--height", o->height, "image height (overrides render.height)");
+  c->add_option("--width", o->width, "image width (overrides render.width)")->check(CLI::Range(1, 16384));
+  c->add_option("--height", o->height, "image height (overrides render.height)")->check(CLI::Range(1, 16384));
   c->add_option("--set", o->sets, "override a scene value: key.path=value (repeatable)");
   c->callback([o, &exitCode] { exitCode = runReference(*o); });
 }

@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <limits>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -11,14 +13,32 @@
 #include "algorithms/gl_command_stream.hpp"
 #include "algorithms/scene_expectations.hpp"
 #include "algorithms/scene_renderer.hpp"
+#include "cli/output_set.hpp"
 #include "cli/scene_arguments.hpp"
 #include "cli/scene_test.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
+#include "util/saturating.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace mpr::cli {
 namespace {
+
+// A JSON string literal: quotes, backslashes and control characters escaped
+// (a scene path may hold any of them).
+std::string jsonString(const std::string& s) {
+  std::string o = "\"";
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (ch == '"' || ch == '\\') o += '\\', o += ch;
+    else if (u < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", u);
+      o += buf;
+    } else o += ch;
+  }
+  return o + "\"";
+}
 
 struct RenderOptions {
   std::string scene;
@@ -26,14 +46,22 @@ struct RenderOptions {
   int width = 0, height = 0;
   std::vector<std::string> sets;
   std::string dumpDir, traceFile, statsFile;
+  bool dumpGiven = false, traceGiven = false, statsGiven = false;  // --dump '' is an error, not "none"
   bool describe = false;
   bool noCull = false;
+  bool confine = false;
+  std::uint64_t maxPasses = 1000000;
+};
+
+// Thrown from the progress callback when a culled render passes --max-passes.
+struct PassLimitReached {
+  std::uint64_t views;
 };
 
 std::string statsJson(const GLCommandStream& s, const Scene& scene, const RenderResult& r, double seconds) {
   std::ostringstream o;
   const PipelineCounters& c = s.counters();
-  o << "{\n  \"scene\": \"" << scene.file << "\",\n  \"width\": " << scene.render.width << ",\n  \"height\": "
+  o << "{\n  \"scene\": " << jsonString(scene.file) << ",\n  \"width\": " << scene.render.width << ",\n  \"height\": "
     << scene.render.height << ",\n  \"seconds\": " << seconds << ",\n  \"gl_calls\": " << s.calls()
     << ",\n  \"gl_errors\": " << s.glErrors() << ",\n  \"scene_triangles\": " << scene.triangleCount()
     << ",\n  \"triangles\": " << c.triangles << ",\n  \"fragments_tested\": " << c.fragmentsTested
@@ -49,7 +77,7 @@ std::string statsJson(const GLCommandStream& s, const Scene& scene, const Render
     << ",\n  \"passes\": {";
   bool first = true;
   for (const auto& [kind, p] : s.passStatistics()) {
-    o << (first ? "\n" : ",\n") << "    \"" << kind << "\": {\"count\": " << p.passes << ", \"gl_calls\": " << p.calls
+    o << (first ? "\n" : ",\n") << "    " << jsonString(kind) << ": {\"count\": " << p.passes << ", \"gl_calls\": " << p.calls
       << ", \"triangles\": " << p.triangles << ", \"fragments_tested\": " << p.fragmentsTested
       << ", \"fragments_written\": " << p.fragmentsWritten << ", \"seconds\": " << p.seconds << "}";
     first = false;
@@ -65,13 +93,33 @@ int runRender(const RenderOptions& o) {
   }
   Scene scene;
   try {
-    scene = loadCommandScene(o.scene, o.sets, o.width, o.height);
+    scene = loadCommandScene(o.scene, o.sets, o.width, o.height, {}, o.confine);
   } catch (const SceneError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   }
   if (const std::string problem = imageOutputProblem("render", o.output); !problem.empty()) {
     std::cerr << problem << "\n";
+    return 2;
+  }
+  // Every output is checked before the render and written after it, together.
+  OutputSet outputs("render");
+  outputs.addFile("-o", o.output);
+  if (o.dumpGiven) outputs.addFolder("--dump", o.dumpDir);
+  if (o.traceGiven) outputs.addFile("--trace", o.traceFile);
+  if (o.statsGiven) outputs.addFile("--stats", o.statsFile);
+  if (const std::string problem = outputs.problem(); !problem.empty()) {
+    std::cerr << problem << "\n";
+    return 2;
+  }
+  // The plan's counts are exact with culling off and an upper bound with it:
+  // a plan past --max-passes is refused before it starts without culling, and
+  // a culled render is stopped when its views alone pass the limit.
+  const RenderPlan plan = planRender(scene, !o.noCull);
+  if (o.noCull && plan.predictedPasses() > o.maxPasses) {
+    std::cerr << scene.file << ": the render would take " << countText(plan.predictedPasses())
+              << " passes (views, lit and shadow passes; mpr info --no-cull lists them), more than --max-passes "
+              << o.maxPasses << "\n";
     return 2;
   }
   std::unique_ptr<GLContext> gl;
@@ -81,29 +129,35 @@ int runRender(const RenderOptions& o) {
     std::cerr << scene.file << ": " << e.what() << "\n";
     return 2;
   }
-  GLCommandStream stream(*gl, !o.traceFile.empty());
+  GLCommandStream stream(*gl, o.traceGiven);
   // The scene's expect: list, read at its passes (nothing drawn changes).
   SceneExpectationWatcher watcher(scene, stream, *gl);
   const bool tty = isatty(2);
   const auto t0 = std::chrono::steady_clock::now();
-  const RenderResult result = renderScene(scene, stream, [&](const RenderProgress& p) {
-    if (tty) std::cerr << "\rrender: view " << p.views << " of at most " << p.predictedViews << "   " << std::flush;
-  }, !o.noCull);
+  RenderResult result;
+  try {
+    result = renderScene(scene, stream, [&](const RenderProgress& p) {
+      if (p.views > o.maxPasses) throw PassLimitReached{p.views};
+      if (tty) std::cerr << "\rrender: view " << p.views << " of at most " << countText(p.predictedViews) << "   " << std::flush;
+    }, !o.noCull);
+  } catch (const PassLimitReached& stop) {
+    if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
+    std::cerr << scene.file << ": the render passed --max-passes " << o.maxPasses << " at view " << stop.views
+              << " (the plan allows up to " << countText(plan.predictedPasses()) << " passes); nothing was written\n";
+    return 2;
+  }
   watcher.finish();
   for (const std::string& w : result.counts.warnings) std::cerr << scene.file << ": warning: " << w << "\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
   try {
-    const std::filesystem::path out(o.output);
-    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-    writeColorImage(gl->framebuffer(), o.output);
-    if (!o.dumpDir.empty()) {
-      std::filesystem::create_directories(o.dumpDir);
+    writeColorImage(gl->framebuffer(), outputs.open(o.output));
+    if (o.dumpGiven)
       for (const NamedBytes& nb : framebufferNpyDumps(gl->framebuffer()))
-        writeFileAtomically((std::filesystem::path(o.dumpDir) / (nb.name + ".npy")).string(), nb.bytes);
-    }
-    if (!o.traceFile.empty()) writeFileAtomically(o.traceFile, stream.trace());
-    if (!o.statsFile.empty()) writeFileAtomically(o.statsFile, statsJson(stream, scene, result, seconds));
+        outputs.write((std::filesystem::path(o.dumpDir) / (nb.name + ".npy")).string(), nb.bytes);
+    if (o.traceGiven) outputs.write(o.traceFile, stream.trace());
+    if (o.statsGiven) outputs.write(o.statsFile, statsJson(stream, scene, result, seconds));
+    outputs.commit();
   } catch (const std::exception& e) {
     std::cerr << "mpr render: " << e.what() << "\n";
     return 1;
@@ -140,15 +194,25 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
       "exits with status 1; an after: that matched no pass is a located error, status 2.");
   c->add_option("scene", o->scene, "scene file (YAML); none renders the default scene");
   c->add_option("-o,--output", o->output, "output image (default out/render.png)");
-  c->add_option("--width", o->width, "image width (overrides render.width)");
-  c->add_option("--height", o->height, "image height (overrides render.height)");
+  c->add_option("--width", o->width, "image width (overrides render.width)")->check(CLI::Range(1, 16384));
+  c->add_option("--height", o->height, "image height (overrides render.height)")->check(CLI::Range(1, 16384));
   c->add_option("--set", o->sets, "override a scene value: key.path=value (repeatable)");
-  c->add_option("--dump", o->dumpDir, "also write the final buffers as .npy files into this folder");
-  c->add_option("--trace", o->traceFile, "write the GL calls executed as a GL script (.gls)");
-  c->add_option("--stats", o->statsFile, "write statistics as JSON: passes by kind, calls, triangles, fragments, time");
+  auto dump = c->add_option("--dump", o->dumpDir, "also write the final buffers as .npy files into this folder");
+  auto trace = c->add_option("--trace", o->traceFile, "write the GL calls executed as a GL script (.gls)");
+  auto stats =
+      c->add_option("--stats", o->statsFile, "write statistics as JSON: passes by kind, calls, triangles, fragments, time");
+  c->add_option("--max-passes", o->maxPasses,
+                 "refuse a render of more passes (views, lit and shadow passes; default 1000000)")
+      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
+  c->add_flag("--confine", o->confine,
+              "refuse mesh files outside the scene's folder (absolute paths, '..', links out), for scenes "
+              "someone else wrote");
   c->add_flag("--no-cull", o->noCull, "recurse into every mirror face, even those seen from behind or hidden");
   c->add_flag("--describe-format", o->describe, "print a JSON Schema-like description of the scene format");
-  c->callback([o, &exitCode] { exitCode = runRender(*o); });
+  c->callback([o, dump, trace, stats, &exitCode] {
+    o->dumpGiven = dump->count() > 0, o->traceGiven = trace->count() > 0, o->statsGiven = stats->count() > 0;
+    exitCode = runRender(*o);
+  });
 }
 
 }  // namespace mpr::cli

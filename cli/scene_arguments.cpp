@@ -14,10 +14,10 @@ std::vector<std::string> commandSets(const std::vector<std::string>& sets, int w
 }
 
 Scene loadCommandScene(const std::string& file, const std::vector<std::string>& sets, int width, int height,
-                       const std::vector<std::string>& more) {
+                       const std::vector<std::string>& more, bool confine) {
   std::vector<std::string> s = commandSets(sets, width, height);
   s.insert(s.end(), more.begin(), more.end());
-  return file.empty() ? loadSceneText(defaultSceneText(), "<default scene>", s) : loadSceneFile(file, s);
+  return file.empty() ? loadSceneText(defaultSceneText(), "<default scene>", s) : loadSceneFile(file, s, confine);
 }
 
 std::string imageOutputProblem(const std::string& command, const std::string& path) {

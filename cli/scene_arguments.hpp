@@ -10,9 +10,10 @@ namespace mpr::cli {
 
 // The scene file (none: the embedded default scene) with the --set
 // overrides, then --width and --height where given (> 0), and `more`.
-// Throws SceneError (FILE:LINE:COLUMN) as the loader does.
+// Throws SceneError (FILE:LINE:COLUMN) as the loader does. `confine`: mesh
+// files only from inside the scene's folder (--confine).
 Scene loadCommandScene(const std::string& file, const std::vector<std::string>& sets, int width, int height,
-                       const std::vector<std::string>& more = {});
+                       const std::vector<std::string>& more = {}, bool confine = false);
 
 // The --set list the above applies before `more`.
 std::vector<std::string> commandSets(const std::vector<std::string>& sets, int width, int height);

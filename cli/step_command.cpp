@@ -1,6 +1,7 @@
 #include "cli/step_command.hpp"
 
 #include <chrono>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -27,6 +28,7 @@ struct StepOptions {
   int state = -1;
   std::string html;
   bool htmlGiven = false;  // --html "" is an error, not "no page"
+  bool pixelGiven = false;  // and so is --pixel ""
   int historyMb = 64;
 };
 
@@ -67,7 +69,7 @@ int runStep(const StepOptions& o) {
     return writeStepPage(script, *profile, {o.html, o.input, static_cast<std::size_t>(o.historyMb) << 20, started});
   }
   int px = -1, py = -1;
-  if (!o.pixel.empty()) {
+  if (o.pixelGiven) {
     char extra = 0;
     if (std::sscanf(o.pixel.c_str(), "%d,%d%c", &px, &py, &extra) != 2 || px < 0 || py < 0 || px >= script.width ||
         py >= script.height) {
@@ -81,7 +83,14 @@ int runStep(const StepOptions& o) {
     std::cerr << "mpr step: --state " << o.state << " is past the last pass (" << passes.size() - 1 << ")\n";
     return 2;
   }
-  GLContext gl(script.width, script.height, *profile);
+  std::unique_ptr<GLContext> context;
+  try {
+    context = std::make_unique<GLContext>(script.width, script.height, *profile);
+  } catch (const FramebufferSizeError& e) {
+    std::cerr << script.file << ": " << e.what() << "\n";
+    return 2;
+  }
+  GLContext& gl = *context;
   if (px >= 0) {
     const std::string history = recordPixelHistory(script, gl, px, py);
     std::cout << "pixel (" << px << "," << py << ") of " << script.file << "\n"
@@ -130,12 +139,15 @@ void addStepCommand(CLI::App& app, int& exitCode) {
       "the pass where the limit was reached, and the page gives the --pixel command for the rest.");
   c->add_option("input", o->input, "a GL script (.gls) or a scene (.yaml)")->required();
   auto pixel = c->add_option("--pixel", o->pixel, "X,Y: the pixel's history");
-  auto state = c->add_option("--state", o->state, "N: the GL state at the end of pass N, as JSON")->excludes(pixel);
+  auto state = c->add_option("--state", o->state, "N: the GL state at the end of pass N, as JSON")
+                   ->check(CLI::Range(0, std::numeric_limits<int>::max()))
+                   ->excludes(pixel);
   auto html = c->add_option("--html", o->html, "DIR: write the stepper page there")->excludes(pixel)->excludes(state);
   c->add_option("--history-mb", o->historyMb, "with --html: the most megabytes of compressed pixel history (default 64)")
       ->needs(html);
-  c->callback([o, html, &exitCode] {
+  c->callback([o, html, pixel, &exitCode] {
     o->htmlGiven = html->count() > 0;
+    o->pixelGiven = pixel->count() > 0;
     exitCode = runStep(*o);
   });
 }

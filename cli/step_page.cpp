@@ -160,7 +160,7 @@ int writeStepPage(const Script& script, const HardwareProfile& profile, const St
   std::size_t total = 0;
   for (const PageFile& f : files) total += f.second.size();
   try {
-    writePageFolder(o.dir, files);
+    writePageFolder(o.dir, kStepPageGenerator, files);
   } catch (const std::exception& e) {
     std::cerr << "mpr step: --html: " << e.what() << "\n";
     return 2;

@@ -38,7 +38,7 @@ class Framebuffer {
   Framebuffer(int width, int height, HardwareProfile profile);
 
   // The reason a size would be refused, or empty when it is acceptable.
-  static std::string checkSize(int width, int height);
+  static std::string checkSize(long long width, long long height);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace mpr {
 namespace {
@@ -117,12 +119,23 @@ PixelRect GLContext::drawRegion() const {
 
 // --- framebuffer and clears ---------------------------------------------------
 
+namespace {
+
+// x + w for a box's far edge: large origins and sizes saturate at int's
+// maximum rather than overflow (the box only ever meets the window).
+int saturatingAdd(int x, int w) {
+  const long long sum = static_cast<long long>(x) + w;
+  return sum > std::numeric_limits<int>::max() ? std::numeric_limits<int>::max() : static_cast<int>(sum);
+}
+
+}  // namespace
+
 void GLContext::viewport(int x, int y, int w, int h) {
   if (!checkOutsideBeginEnd()) return;
   if (w < 0 || h < 0) return setError(GL_INVALID_VALUE);
   w = std::min(w, Framebuffer::kMaxSide);
   h = std::min(h, Framebuffer::kMaxSide);
-  viewportBox_ = {x, y, x + w, y + h};
+  viewportBox_ = {x, y, saturatingAdd(x, w), saturatingAdd(y, h)};
   // Mesa's viewport: scale = size / 2, translate = origin + size / 2.
   vpScaleX_ = static_cast<float>(w) / 2.0f;
   vpScaleY_ = static_cast<float>(h) / 2.0f;
@@ -133,7 +146,7 @@ void GLContext::viewport(int x, int y, int w, int h) {
 void GLContext::scissor(int x, int y, int w, int h) {
   if (!checkOutsideBeginEnd()) return;
   if (w < 0 || h < 0) return setError(GL_INVALID_VALUE);
-  scissorBox_ = {x, y, x + w, y + h};
+  scissorBox_ = {x, y, saturatingAdd(x, w), saturatingAdd(y, h)};
 }
 
 void GLContext::clearColor(float r, float g, float b, float a) {
@@ -315,8 +328,11 @@ void GLContext::fogf(GLenumValue pname, float param) {
   if (!checkOutsideBeginEnd()) return;
   switch (pname) {
     case GL_FOG_MODE: {
-      const auto m = static_cast<GLenumValue>(param);
-      if (static_cast<float>(m) != param) return setError(GL_INVALID_ENUM);
+      // Mesa: (GLenum)(GLint) param, so 9729.5 truncates to GL_LINEAR. A
+      // value outside int's range (inf, NaN, 1e30) names no mode (and would
+      // be undefined behaviour to convert).
+      if (!(param > -2147483648.0f && param < 2147483648.0f)) return setError(GL_INVALID_ENUM);
+      const auto m = static_cast<GLenumValue>(static_cast<std::int32_t>(param));
       if (m == GL_LINEAR) fog_.mode = FogMode::Linear;
       else if (m == GL_EXP) fog_.mode = FogMode::Exp;
       else if (m == GL_EXP2) fog_.mode = FogMode::Exp2;

@@ -91,8 +91,14 @@ class GLContext {
   void colorMask(bool r, bool g, bool b, bool a);
   void depthMask(bool flag);
   void stencilMask(std::uint32_t mask);
-  void finish() { flushVertices(); }
-  void flush() { flushVertices(); }
+  // The quads waiting to be drawn go first; inside glBegin/glEnd they are
+  // GL_INVALID_OPERATION (as Mesa).
+  void finish() {
+    if (checkOutsideBeginEnd()) flushVertices();
+  }
+  void flush() {
+    if (checkOutsideBeginEnd()) flushVertices();
+  }
 
   // --- per-fragment state ---------------------------------------------------
   void enable(GLenumValue cap) { setCapability(cap, true); }

@@ -187,7 +187,7 @@ struct LlvmpipeDepth {
     LlWindow p0 = toLlWindow(d0, window), p1 = toLlWindow(d1, window);
     const LlWindow p2 = toLlWindow(d2, window);
     // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions.
-    auto fixed = [](float f) { return static_cast<std::int64_t>(std::nearbyint(f * 256.0f)); };
+    auto fixed = [](float f) { return saturateToInt64(std::nearbyint(static_cast<double>(f) * 256.0)); };
     const std::int64_t area = (fixed(p0.x) - fixed(p1.x)) * (fixed(p2.y) - fixed(p0.y)) -
                               (fixed(p2.x) - fixed(p0.x)) * (fixed(p0.y) - fixed(p1.y));
     if (area == 0) return;  // llvmpipe draws nothing

@@ -1,5 +1,7 @@
 #include "pipeline/gl_script.hpp"
 
+#include "util/input_file.hpp"
+
 #include <GL/gl.h>
 
 #include <algorithm>
@@ -246,8 +248,7 @@ class Parser {
           const auto w = parseInteger(toks[1].text), h = parseInteger(toks[2].text);
           if (!w) fail(lineNo, toks[1].column, "framebuffer width must be an integer");
           if (!h) fail(lineNo, toks[2].column, "framebuffer height must be an integer");
-          const std::string why = Framebuffer::checkSize(static_cast<int>(std::clamp<long long>(*w, -1, 1 << 30)),
-                                                         static_cast<int>(std::clamp<long long>(*h, -1, 1 << 30)));
+          const std::string why = Framebuffer::checkSize(*w, *h);
           if (!why.empty()) fail(lineNo, toks[1].column, why);
           script.width = static_cast<int>(*w);
           script.height = static_cast<int>(*h);
@@ -611,11 +612,13 @@ std::size_t Script::probeCount() const {
 Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }
 
 Script loadScript(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError(path, 0, 0, "cannot read the script: " + std::string(std::strerror(errno)));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parseScript(ss.str(), path);
+  std::string text;
+  try {
+    text = readInputFile(path, kMaxScriptBytes, "the script");
+  } catch (const std::runtime_error& e) {
+    throw ScriptError(path, 0, 0, e.what());
+  }
+  return parseScript(text, path);
 }
 
 }  // namespace mpr

@@ -13,6 +13,7 @@
 
 #include "pipeline/gl_call.hpp"
 #include "framebuffer/script_probe.hpp"
+#include "util/printable_text.hpp"
 
 namespace mpr {
 
@@ -20,7 +21,7 @@ namespace mpr {
 class ScriptError : public std::runtime_error {
  public:
   ScriptError(std::string file, int line, int column, const std::string& message)
-      : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message),
+      : std::runtime_error(printableText(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message)),
         file_(std::move(file)), line_(line), column_(column) {}
   int line() const { return line_; }
   int column() const { return column_; }
@@ -63,6 +64,9 @@ struct Script {
 // Parses `text`; `file` names it in error messages. Throws ScriptError.
 Script parseScript(std::string_view text, const std::string& file);
 // Reads and parses a file; an unreadable file is a ScriptError at 0:0.
+// The largest script file read (a regular file only): 1 GiB, about five
+// times the trace of the bathroom scene's 2.85 M calls.
+inline constexpr std::uint64_t kMaxScriptBytes = std::uint64_t{1} << 30;
 Script loadScript(const std::string& path);
 
 }  // namespace mpr

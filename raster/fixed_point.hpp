@@ -11,10 +11,24 @@ namespace mpr {
 inline constexpr int kSubpixelBits = 8;
 inline constexpr std::int64_t kSubpixelOne = std::int64_t{1} << kSubpixelBits;
 
+// A rounded double to int64 without undefined behaviour: NaN gives 0 and
+// magnitudes past 2^62 saturate there (so that differences and the products
+// of edge functions over them stay representable). Values a render can reach
+// (windows of 16384 pixels, viewports at int offsets) are far inside, so
+// their results are unchanged; only NaN, infinite and w = 0 vertices and
+// singular matrices reach the clamp, and the callers drop those primitives.
+inline std::int64_t saturateToInt64(double rounded) {
+  constexpr double kLimit = 4611686018427387904.0;  // 2^62
+  if (!(rounded == rounded)) return 0;
+  if (rounded >= kLimit) return std::int64_t{1} << 62;
+  if (rounded <= -kLimit) return -(std::int64_t{1} << 62);
+  return static_cast<std::int64_t>(rounded);
+}
+
 // Window coordinate to fixed point, rounding to nearest even as lrintf does.
 inline std::int64_t snapToSubpixel(float windowCoord) {
   const double shifted = (static_cast<double>(windowCoord) - 0.5) * static_cast<double>(kSubpixelOne);
-  return static_cast<std::int64_t>(std::nearbyint(shifted));
+  return saturateToInt64(std::nearbyint(shifted));
 }
 
 // Smallest integer n with n * 256 >= v, and largest with n * 256 <= v.

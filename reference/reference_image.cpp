@@ -26,9 +26,15 @@ std::vector<std::uint8_t> quantiseToRgb8(const ReferenceImage& image) {
   return out;
 }
 
+void writeReferenceImage(const ReferenceImage& image, AtomicFile& file) {
+  if (floatFormat(file.target())) writeRgbImage(file, image.width, image.height, image.rgb.data());
+  else writeRgbImage(file, image.width, image.height, quantiseToRgb8(image).data());
+}
+
 void writeReferenceImage(const ReferenceImage& image, const std::string& path) {
-  if (floatFormat(path)) writeRgbImage(path, image.width, image.height, image.rgb.data());
-  else writeRgbImage(path, image.width, image.height, quantiseToRgb8(image).data());
+  AtomicFile file(path);
+  writeReferenceImage(image, file);
+  file.commit();
 }
 
 ReferenceImage readReferenceImage(const std::string& path) {

@@ -3,13 +3,14 @@
 // (PNG, TIFF) hold each channel clamped to [0, 1] and quantised as the
 // pipeline quantises a colour (floatToUnorm8: round to nearest, ties to even,
 // of v * 255), so they compare byte for byte with `mpr render`'s images; EXR
-// holds the linear floats. Files are written to a temporary name and renamed
-// into place, as framebuffer/image_writer.cpp does.
+// holds the linear floats. Files are written through util/atomic_file (a fresh
+// temporary beside the target, renamed into place).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "reference/reference_renderer.hpp"
+#include "util/atomic_file.hpp"
 
 namespace mpr {
 
@@ -19,6 +20,8 @@ std::vector<std::uint8_t> quantiseToRgb8(const ReferenceImage& image);
 // By extension: .png, .tif, .tiff (8-bit) or .exr (32-bit float). Throws
 // std::runtime_error on failure, leaving any old file at `path` untouched.
 void writeReferenceImage(const ReferenceImage& image, const std::string& path);
+// Into a prepared temporary (util/atomic_file), finished, not committed.
+void writeReferenceImage(const ReferenceImage& image, AtomicFile& file);
 
 // Reads PNG, TIFF or EXR (anything OpenImageIO reads, first three channels);
 // 8-bit values come back as v / 255. Rows come back bottom first, as stored

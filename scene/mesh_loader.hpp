@@ -1,13 +1,19 @@
 #pragma once
 // Mesh files (OBJ, OFF, PLY, STL) through OpenMesh, as polygons with smooth
 // vertex normals.
+#include <cstdint>
 #include <string>
 
 #include "scene/scene.hpp"
 
 namespace mpr {
 
-// Throws std::runtime_error with the reason when the file cannot be read.
+// The largest mesh file read (a regular file only): 512 MiB.
+inline constexpr std::uint64_t kMaxMeshBytes = std::uint64_t{512} << 20;
+
+// Throws std::runtime_error with the reason when the file cannot be read: not
+// a regular file, over the size limit, header counts the file cannot hold,
+// no faces, or a vertex that is not finite.
 Mesh loadMeshFile(const std::string& path);
 
 }  // namespace mpr

@@ -8,11 +8,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
+#include "util/input_file.hpp"
 #include "util/spelling.hpp"
 #include "util/transforms.hpp"
 #include "scene/mesh_loader.hpp"
@@ -119,7 +121,8 @@ struct Override {
 
 class Loader {
  public:
-  Loader(std::string file, std::vector<Override> overrides) : file_(std::move(file)), overrides_(std::move(overrides)) {}
+  Loader(std::string file, std::vector<Override> overrides, bool confine)
+      : file_(std::move(file)), overrides_(std::move(overrides)), confine_(confine) {}
 
   [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
     // A value that came from --set has no place in the file: name the option.
@@ -134,8 +137,23 @@ class Loader {
     throw SceneError(file_, m.line + 1, m.column + 1, message);
   }
 
+  // YAML forbids a key twice in one mapping; yaml-cpp keeps both and reads
+  // the first, so `scale: 1` then `scale: 0` would silently drop the second.
+  void checkUniqueKeys(const YAML::Node& map, const std::string& where) const {
+    std::map<std::string, YAML::Mark> seen;
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      if (!it->first.IsScalar()) fail(it->first, "a key in " + where + " must be a plain name");
+      const auto [at, fresh] = seen.emplace(it->first.Scalar(), it->first.Mark());
+      if (!fresh)
+        fail(it->first, "key '" + it->first.Scalar() + "' given twice in " + where + " (first at line " +
+                            std::to_string(at->second.line + 1) + ", column " + std::to_string(at->second.column + 1) +
+                            "); give it once");
+    }
+  }
+
   void checkKeys(const YAML::Node& map, const std::vector<KeySpec>& keys, const std::string& where) const {
     if (!map.IsMap()) fail(map, where + " must be a mapping");
+    checkUniqueKeys(map, where);
     for (auto it = map.begin(); it != map.end(); ++it) {
       const std::string k = it->first.as<std::string>();
       if (std::any_of(keys.begin(), keys.end(), [&](const KeySpec& s) { return s.key == k; })) continue;
@@ -161,6 +179,10 @@ class Loader {
     const double v = std::strtod(s.c_str(), &end);
     if (s.empty() || end != s.c_str() + s.size()) fail(n, what + " must be a number, not '" + s + "'");
     if (!std::isfinite(v)) fail(n, what + " must be finite, not '" + s + "'");
+    // Every scene number is used as a float: 1e39 is finite as a double and
+    // infinite as a float, so the check is on the range it will be used in.
+    if (std::fabs(v) > static_cast<double>(std::numeric_limits<float>::max()))
+      fail(n, what + " must be within a float's range (magnitude at most 3.4e38), not '" + s + "'");
     return v;
   }
   double number(const YAML::Node& n, const std::string& what, double lo, double hi, bool openLo = false) const {
@@ -218,6 +240,7 @@ class Loader {
     s.materials.push_back(SceneMaterial{"default"});
     if (const YAML::Node ms = doc["materials"]) {
       if (!ms.IsMap()) fail(ms, "materials must be a mapping from names to materials");
+      checkUniqueKeys(ms, "materials");
       for (auto it = ms.begin(); it != ms.end(); ++it) {
         SceneMaterial m = readMaterial(it->second, it->first.as<std::string>());
         materialIndex[m.name] = static_cast<int>(s.materials.size());
@@ -365,6 +388,13 @@ class Loader {
       if ((p == "box" || p == "quad" || p == "plane") && sub > 1024)
         fail(n["subdivisions"], where + " subdivisions must be at most 1024 for a " + p + " (its cells grow with the square), not " +
                                     std::to_string(sub));
+      // Checked before the mesh is made: YAML aliases repeat an object at no
+      // cost in the file, so the budget is for the whole scene.
+      const bool grid = p == "box" || p == "quad" || p == "plane";
+      const std::uint64_t d = static_cast<std::uint64_t>(sub ? sub : grid ? 1 : 32);
+      const std::uint64_t predicted = p == "box" ? 12 * d * d : p == "sphere" ? 2 * d * std::max<std::uint64_t>(2, d / 2) + 2 * d
+                                      : p == "cylinder" ? 4 * d : 2 * d * d;
+      checkTriangleBudget(n, where, predicted);
       if (p == "box") o.mesh = makeBox(sub ? sub : 1);
       else if (p == "sphere") o.mesh = makeSphere(sub ? sub : 32, sub ? std::max(2, sub / 2) : 16);
       else if (p == "cylinder") o.mesh = makeCylinder(sub ? std::max(3, sub) : 32);
@@ -374,12 +404,22 @@ class Loader {
     } else {
       const std::string rel = string(n["mesh"], where + " mesh");
       const std::filesystem::path path = std::filesystem::path(file_).parent_path() / rel;
+      if (confine_) {
+        std::error_code ec;
+        const auto folder = std::filesystem::weakly_canonical(std::filesystem::absolute(std::filesystem::path(file_).parent_path()), ec);
+        const auto mesh = std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
+        const auto inside = mesh.lexically_relative(folder);
+        if (ec || std::filesystem::path(rel).is_absolute() || inside.empty() || *inside.begin() == "..")
+          fail(n["mesh"], where + " mesh '" + rel + "' lies outside the scene's folder, which --confine refuses");
+      }
       try {
         o.mesh = loadMeshFile(path.string());
       } catch (const std::exception& e) {
         fail(n["mesh"], where + ": " + e.what());
       }
+      checkTriangleBudget(n["mesh"], where, o.mesh.triangles.size());
     }
+    triangles_ += o.mesh.triangles.size();
     Mat4 m(1.0f);
     if (n["translate"]) m = multiply(m, translationMatrix(vec3(n["translate"], where + " translate").x,
                                                            vec3(n["translate"], where + " translate").y,
@@ -626,6 +666,12 @@ class Loader {
     checkInWindow(n, p, r);
   }
 
+  void checkTriangleBudget(const YAML::Node& at, const std::string& where, std::uint64_t more) const {
+    if (triangles_ + more > kMaxSceneTriangles)
+      fail(at, where + " would bring the scene to " + std::to_string(triangles_ + more) + " triangles, more than the " +
+                   std::to_string(kMaxSceneTriangles) + " a scene may hold (about 3 GB of mesh)");
+  }
+
   void checkLimits(const YAML::Node& doc, const Scene& s) const {
     const HardwareProfile p = *findProfile(s.render.profile);
     // 1994 paper: recursion levels live below SHAD_MIN (half the stencil
@@ -643,6 +689,8 @@ class Loader {
  private:
   std::string file_;
   std::vector<Override> overrides_;
+  bool confine_ = false;                  // meshes only from inside the scene's folder
+  mutable std::uint64_t triangles_ = 0;  // the scene's so far, for the budget
 };
 
 Override applyOverride(YAML::Node& doc, const std::string& kv) {
@@ -675,7 +723,8 @@ Override applyOverride(YAML::Node& doc, const std::string& kv) {
 
 }  // namespace
 
-Scene loadSceneText(const std::string& text, const std::string& file, const std::vector<std::string>& overrides) {
+Scene loadSceneText(const std::string& text, const std::string& file, const std::vector<std::string>& overrides,
+                    bool confine) {
   YAML::Node doc;
   try {
     doc = YAML::Load(text);
@@ -685,18 +734,20 @@ Scene loadSceneText(const std::string& text, const std::string& file, const std:
   std::vector<Override> applied;
   for (const std::string& kv : overrides) applied.push_back(applyOverride(doc, kv));
   try {
-    return Loader(file, applied).load(doc);
+    return Loader(file, applied, confine).load(doc);
   } catch (const YAML::Exception& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
   }
 }
 
-Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path, 0, 0, "cannot read the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return loadSceneText(ss.str(), path, overrides);
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides, bool confine) {
+  std::string text;
+  try {
+    text = readInputFile(path, kMaxSceneBytes, "the scene file");
+  } catch (const std::runtime_error& e) {
+    throw SceneError(path, 0, 0, e.what());
+  }
+  return loadSceneText(text, path, overrides, confine);
 }
 
 std::string describeSceneFormat() {

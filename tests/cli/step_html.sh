@@ -20,10 +20,22 @@ grep -qF '"  line {line} glEnd, fragment {k}: stencil GL_ALWAYS (0 & 0xff vs {s0
 # Deterministic: the same bytes again, and an earlier page is replaced whole.
 "$MPR" step "$script" --html "$WORK/again" >/dev/null 2>&1 || fail "second run failed"
 diff -r "$page" "$WORK/again" >/dev/null || fail "two runs wrote different bytes"
-echo stale > "$page/stale.txt"
+# An earlier page is known by the .mpr-page marker MPR wrote, naming every file.
+[[ "$(head -1 "$page/.mpr-page")" == "mpr step" ]] || fail "the marker: $(cat "$page/.mpr-page")"
+echo edited > "$page/passes.js"
 "$MPR" step "$script" --html "$page" >/dev/null 2>&1 || fail "replacing an earlier page failed"
-[[ ! -e "$page/stale.txt" ]] || fail "the earlier page was not replaced whole"
+diff -r "$page" "$WORK/again" >/dev/null || fail "the earlier page was not replaced whole"
 [[ "$(ls -A "$WORK/out")" == "page" ]] || fail "left something beside the replaced page: $(ls -A "$WORK/out")"
+# A file of someone else's in it: the folder is not only a page, and is refused as it is.
+echo keep > "$page/notes.txt"
+out="$("$MPR" step "$script" --html "$page" 2>&1)"; [[ $? -eq 2 && "$out" == *"other files"* ]] || fail "a page with another file: $out"
+[[ "$(cat "$page/notes.txt")" == keep && -e "$page/index.html" ]] || fail "a page with another file was touched"
+rm "$page/notes.txt"
+# A lookalike: an index.html with the generator tag but no marker is not a page.
+mkdir -p "$WORK/look" && cp "$page/index.html" "$WORK/look/" && echo keep > "$WORK/look/data.csv"
+out="$("$MPR" step "$script" --html "$WORK/look" 2>&1)"; [[ $? -eq 2 ]] || fail "a lookalike page was taken: $out"
+rm "$WORK/look/data.csv"
+out="$("$MPR" step "$script" --html "$WORK/look" 2>&1)"; [[ $? -eq 2 ]] || fail "an index.html alone, without the marker, was taken: $out"
 # --history-mb 0: no histories, and the page says up to which pass it has them.
 "$MPR" step "$script" --html "$WORK/none" --history-mb 0 >/dev/null 2>&1 || fail "--history-mb 0 failed"
 grep -qF '"recorded_passes": 0' "$WORK/none/passes.js" || fail "--history-mb 0 recorded histories"

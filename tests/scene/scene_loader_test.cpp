@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -108,8 +109,11 @@ TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
 class MeshFiles : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / ("mpr_scene_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-    std::filesystem::create_directories(dir_);
+    // A fresh folder per test: CTest runs each test as its own process, in
+    // parallel, and a shared name let one test's TearDown remove another's files.
+    std::string t = (std::filesystem::temp_directory_path() / "mpr_scene_test_XXXXXX").string();
+    ASSERT_NE(mkdtemp(t.data()), nullptr);
+    dir_ = t;
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) {
