@@ -16,6 +16,7 @@
 #include "reference/accuracy/sweep.hpp"
 #include "reference/reference_renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "util/number_text.hpp"
 
 namespace mpr::cli {
 namespace {
@@ -34,12 +35,6 @@ struct AccuracyOptions {
 struct UserError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-
-std::string fixed(double v, int digits) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
-}
 
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -180,11 +175,11 @@ class AccuracyRun {
     }
     if (total <= o_.budget) return;
     std::ostringstream m;
-    m << "mpr accuracy: the sweep would take about " << fixed(total, 0) << " s, over --budget " << fixed(o_.budget, 0)
+    m << "mpr accuracy: the sweep would take about " << fixedText(total, 0) << " s, over --budget " << fixedText(o_.budget, 0)
       << " s (" << rows_.size() << " settings x " << o_.repeat << " runs";
-    if (withReference) m << ", the reference about " << fixed(referenceEstimate, 0) << " s";
+    if (withReference) m << ", the reference about " << fixedText(referenceEstimate, 0) << " s";
     m << "). The most costly setting is " << rows_[worstRow].label << ": about "
-      << fixed(rows_[worstRow].estimatedSeconds, 1) << " s a run, " << fixed(predictedPasses(scenes_[worstRow]), 0)
+      << fixedText(rows_[worstRow].estimatedSeconds, 1) << " s a run, " << fixedText(predictedPasses(scenes_[worstRow]), 0)
       << " passes predicted by the planner. Drop it, lower --repeat, or raise --budget.";
     throw UserError(m.str());
   }
@@ -200,7 +195,7 @@ class AccuracyRun {
     report_.reference = std::to_string(o_.spp) + " spp, " + o_.model + " model, " +
                         (o_.bounces < 0 ? std::string("bounces until below 1/512") : std::to_string(o_.bounces) + " bounces");
     if (tty_) std::cerr << "\r" << std::string(60, ' ') << "\r";
-    if (!o_.quiet) std::cerr << "accuracy: reference traced in " << fixed(report_.referenceSeconds, 2) << " s\n";
+    if (!o_.quiet) std::cerr << "accuracy: reference traced in " << fixedText(report_.referenceSeconds, 2) << " s\n";
     return quantiseReference(im);
   }
 
@@ -231,8 +226,8 @@ class AccuracyRun {
       std::snprintf(name, sizeof name, "setting-%02zu", i);
       measure(rows_[i], scenes_[i], reference, name);
       if (!o_.quiet && !tty_)
-        std::cerr << "accuracy: " << rows_[i].label << ": " << fixed(rows_[i].seconds, 3) << " s, "
-                  << fixed(rows_[i].error.rmsPercent, 2) << " % RMS\n";
+        std::cerr << "accuracy: " << rows_[i].label << ": " << fixedText(rows_[i].seconds, 3) << " s, "
+                  << fixedText(rows_[i].error.rmsPercent, 2) << " % RMS\n";
     }
     if (tty_) std::cerr << "\r" << std::string(80, ' ') << "\r";
     report_.rows = rows_;
@@ -250,7 +245,7 @@ class AccuracyRun {
     writePageFolder(o_.report, kGenerator, files_);
     if (!o_.quiet) {
       std::cerr << "accuracy: " << report_.rows.size() << " settings of " << report_.scene << "; single pass "
-                << fixed(report_.singlePass.error.rmsPercent, 2) << " % RMS; report in " << o_.report << "/report.html\n";
+                << fixedText(report_.singlePass.error.rmsPercent, 2) << " % RMS; report in " << o_.report << "/report.html\n";
     }
   }
 

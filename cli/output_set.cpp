@@ -8,29 +8,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "'PATH' why", built by appending (GCC 12 warns falsely, -Wrestrict, on operator+ chains).
-std::string quoted(const std::string& path, const char* why) {
-  std::string o = "'";
-  o += path;
-  o += "' ";
-  o += why;
-  return o;
-}
-
 std::string folderProblem(const std::string& dir) {
   if (dir.empty()) return "an empty name is not a folder to write";
   std::error_code ec;
   const fs::file_status st = fs::status(dir, ec);
-  if (fs::exists(st) && !fs::is_directory(st)) return quoted(dir, "exists and is not a folder");
-  for (fs::path a = fs::absolute(dir, ec).lexically_normal(); !a.empty(); a = a.parent_path()) {
-    const fs::file_status as = fs::status(a, ec);
-    if (fs::exists(as)) {
-      if (!fs::is_directory(as)) return quoted(a.string(), "is not a folder");
-      break;
-    }
-    if (a == a.parent_path()) break;
-  }
-  return "";
+  if (fs::exists(st) && !fs::is_directory(st)) return quotedPath(dir, "exists and is not a folder");
+  return existingAncestorProblem(fs::absolute(dir, ec).lexically_normal());
 }
 
 }  // namespace

@@ -1,7 +1,5 @@
 #include "cli/page_folder.hpp"
 
-#include "util/atomic_file.hpp"
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,19 +9,12 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "util/atomic_file.hpp"
+
 namespace mpr::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-// "'DIR' why": built by appending, as GCC 12 warns falsely (-Wrestrict) on operator+ chains.
-std::string quoted(const std::string& path, std::string_view why) {
-  std::string o = "'";
-  o += path;
-  o += "' ";
-  o += why;
-  return o;
-}
 
 // The marker MPR writes into every page folder: the generator on the first
 // line, then every file it wrote. A folder is an earlier page only when the
@@ -85,25 +76,16 @@ std::string pageFolderProblem(const std::string& dir, std::string_view generator
   std::error_code ec;
   const fs::path p = fs::path(dir).lexically_normal();
   if (p.empty() || p.filename().empty() || p.filename() == "." || p.filename() == "..")
-    return quoted(dir, "does not name a folder to write (give a new folder's name, e.g. out/page)");
+    return quotedPath(dir, "does not name a folder to write (give a new folder's name, e.g. out/page)");
   const fs::file_status st = fs::symlink_status(p, ec);
   if (fs::exists(st)) {
-    if (!fs::is_directory(st)) return quoted(dir, "exists and is not a folder");
+    if (!fs::is_directory(st)) return quotedPath(dir, "exists and is not a folder");
     if (!fs::is_empty(p, ec) && !holdsPage(p, generator))
-      return quoted(dir, "is a folder with other files in it; give a new or empty folder (an earlier page MPR wrote, "
+      return quotedPath(dir, "is a folder with other files in it; give a new or empty folder (an earlier page MPR wrote, "
                          "with its .mpr-page marker and nothing else, is replaced)");
   }
   // The nearest existing ancestor must be a folder (the rest is created).
-  for (fs::path a = fs::absolute(p, ec).parent_path(); !a.empty(); a = a.parent_path()) {
-    const fs::file_status as = fs::status(a, ec);
-    if (!fs::exists(as)) {
-      if (a == a.parent_path()) break;
-      continue;
-    }
-    if (!fs::is_directory(as)) return quoted(a.string(), "is not a folder");
-    break;
-  }
-  return "";
+  return existingAncestorProblem(fs::absolute(p, ec).parent_path());
 }
 
 void writePageFolder(const std::string& dir, std::string_view generator, const std::vector<PageFile>& files) {
@@ -118,7 +100,7 @@ void writePageFolder(const std::string& dir, std::string_view generator, const s
       // Checked again: the folder may have changed while the page was made.
       std::error_code ec;
       if (!fs::is_directory(fs::symlink_status(target)) || (!fs::is_empty(target, ec) && !holdsPage(target, generator)))
-        throw std::runtime_error(quoted(target.string(), "changed while the page was made and is no longer an earlier page"));
+        throw std::runtime_error(quotedPath(target.string(), "changed while the page was made and is no longer an earlier page"));
       const fs::path old = sibling(target, "old");
       fs::rename(target, old);
       try {

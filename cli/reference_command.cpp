@@ -14,6 +14,7 @@
 #include "reference/reference_image.hpp"
 #include "reference/reference_renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "util/number_text.hpp"
 
 namespace mpr::cli {
 namespace {
@@ -26,14 +27,6 @@ struct ReferenceCommandOptions {
   std::string model = "pipeline";
   std::vector<std::string> sets;
 };
-
-std::string fixed(double v, int digits) {
-  std::ostringstream o;
-  o.setf(std::ios::fixed);
-  o.precision(digits);
-  o << v;
-  return o.str();
-}
 
 int runReference(const ReferenceCommandOptions& o) {
   Scene scene;
@@ -64,7 +57,7 @@ int runReference(const ReferenceCommandOptions& o) {
     options.progress = [&](int rows, int total) {
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double eta = rows > 0 ? s * (total - rows) / rows : 0.0;
-      std::cerr << "\rreference: row " << rows << " of " << total << ", ETA " << fixed(eta, 1) << " s   " << std::flush;
+      std::cerr << "\rreference: row " << rows << " of " << total << ", ETA " << fixedText(eta, 1) << " s   " << std::flush;
     };
   const ReferenceImage image = renderReference(scene, options);
   if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
@@ -78,8 +71,8 @@ int runReference(const ReferenceCommandOptions& o) {
   const ReferenceStats& s = image.stats;
   const double rays = static_cast<double>(s.cameraRays + s.specularRays + s.shadowRays);
   std::cerr << "traced " << scene.file << " (" << image.width << "x" << image.height << ", " << o.spp << " spp, "
-            << o.model << ") to " << o.output << " in " << fixed(s.seconds, 2) << " s ("
-            << fixed(s.seconds > 0.0 ? rays / s.seconds / 1e6 : 0.0, 2) << " M rays/s)\n";
+            << o.model << ") to " << o.output << " in " << fixedText(s.seconds, 2) << " s ("
+            << fixedText(s.seconds > 0.0 ? rays / s.seconds / 1e6 : 0.0, 2) << " M rays/s)\n";
   return 0;
 }
 

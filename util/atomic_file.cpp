@@ -36,20 +36,11 @@ std::string randomTag() {
   return s;
 }
 
-// "'PATH' why", built by appending (GCC 12 warns falsely, -Wrestrict, on operator+ chains).
-std::string quoted(const std::string& path, const char* why) {
-  std::string o = "'";
-  o += path;
-  o += "' ";
-  o += why;
-  return o;
-}
-
 }  // namespace
 
 AtomicFile::AtomicFile(std::string target) : target_(std::move(target)) {
   const fs::path p(target_);
-  if (p.filename().empty()) throw std::runtime_error("cannot write " + quoted(target_, "(it names no file)"));
+  if (p.filename().empty()) throw std::runtime_error("cannot write " + quotedPath(target_, "(it names no file)"));
   for (int attempt = 0; attempt < 100; ++attempt) {
     // Keep the extension so that OpenImageIO picks the right format.
     std::string name = ".";
@@ -128,25 +119,36 @@ void writeFilesAtomically(const std::vector<std::pair<std::string, std::string>>
   for (AtomicFile& f : pending) f.commit();
 }
 
+// Built by appending (GCC 12 warns falsely, -Wrestrict, on operator+ chains).
+std::string quotedPath(const std::string& path, std::string_view why) {
+  std::string o = "'";
+  o += path;
+  o += "' ";
+  o += why;
+  return o;
+}
+
+std::string existingAncestorProblem(const fs::path& start) {
+  std::error_code ec;
+  for (fs::path a = start; !a.empty(); a = a.parent_path()) {
+    const fs::file_status as = fs::status(a, ec);
+    if (fs::exists(as)) return fs::is_directory(as) ? "" : quotedPath(a.string(), "is not a folder");
+    if (a == a.parent_path()) break;
+  }
+  return "";
+}
+
 std::string outputFileProblem(const std::string& path) {
   if (path.empty()) return "an empty name is not a file to write";
   const fs::path p(path);
   if (p.filename().empty() || p.filename() == "." || p.filename() == "..")
-    return quoted(path, "does not name a file to write");
+    return quotedPath(path, "does not name a file to write");
   std::error_code ec;
   const fs::file_status st = fs::status(p, ec);
-  if (fs::is_directory(st)) return quoted(path, "is a folder, not a file to write");
-  if (fs::exists(st) && !fs::is_regular_file(st)) return quoted(path, "exists and is not a regular file");
+  if (fs::is_directory(st)) return quotedPath(path, "is a folder, not a file to write");
+  if (fs::exists(st) && !fs::is_regular_file(st)) return quotedPath(path, "exists and is not a regular file");
   // The nearest existing ancestor must be a folder (the rest is created).
-  for (fs::path a = fs::absolute(p, ec).parent_path(); !a.empty(); a = a.parent_path()) {
-    const fs::file_status as = fs::status(a, ec);
-    if (fs::exists(as)) {
-      if (!fs::is_directory(as)) return quoted(a.string(), "is not a folder");
-      break;
-    }
-    if (a == a.parent_path()) break;
-  }
-  return "";
+  return existingAncestorProblem(fs::absolute(p, ec).parent_path());
 }
 
 bool sameOutputFile(const std::string& a, const std::string& b) {

@@ -9,6 +9,7 @@
 // itself, it does not follow it). A group of files is committed together:
 // every temporary is written before the first rename, so a full disk or a
 // bad path leaves none of them replaced.
+#include <filesystem>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -51,6 +52,14 @@ void writeFileAtomically(const std::string& path, std::string_view bytes);
 // Writes every (path, bytes) pair to its temporary first, then renames them
 // all into place: on any failure before the renames none is replaced.
 void writeFilesAtomically(const std::vector<std::pair<std::string, std::string>>& files);
+
+// "'PATH' why": the form of every output-path message.
+std::string quotedPath(const std::string& path, std::string_view why);
+
+// Why folders cannot be created down to `start` (an absolute folder path):
+// the nearest of `start` and its ancestors that exists is not a folder
+// (empty when it is one, or when none exists).
+std::string existingAncestorProblem(const std::filesystem::path& start);
 
 // Why `path` cannot be written as an output file, or empty when it can: an
 // empty name, an existing folder, a parent that exists and is not a folder.

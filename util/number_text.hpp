@@ -16,4 +16,7 @@ void appendInteger(std::string& out, long long v);
 inline std::string shortestText(float v) { std::string s; appendShortest(s, v); return s; }
 inline std::string shortestText(double v) { std::string s; appendShortest(s, v); return s; }
 
+// `digits` digits after the point (printf's %.*f), for reports and messages.
+std::string fixedText(double v, int digits);
+
 }  // namespace mpr

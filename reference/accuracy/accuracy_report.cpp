@@ -1,4 +1,5 @@
 #include "reference/accuracy/accuracy_report.hpp"
+#include "util/number_text.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,12 +7,6 @@
 
 namespace mpr {
 namespace {
-
-std::string fixed(double v, int digits) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
-}
 
 std::string csvField(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -52,22 +47,22 @@ struct Column {
   std::string (*value)(const AccuracyReport&, const AccuracyRow&);
 };
 const Column kColumns[] = {
-    {"seconds", [](const AccuracyReport&, const AccuracyRow& w) { return fixed(w.seconds, 4); }},
-    {"estimated_seconds", [](const AccuracyReport&, const AccuracyRow& w) { return fixed(w.estimatedSeconds, 3); }},
+    {"seconds", [](const AccuracyReport&, const AccuracyRow& w) { return fixedText(w.seconds, 4); }},
+    {"estimated_seconds", [](const AccuracyReport&, const AccuracyRow& w) { return fixedText(w.estimatedSeconds, 3); }},
     {"views", [](const AccuracyReport&, const AccuracyRow& w) { return std::to_string(w.views); }},
     {"light_passes", [](const AccuracyReport&, const AccuracyRow& w) { return std::to_string(w.lightPasses); }},
     {"shadow_passes", [](const AccuracyReport&, const AccuracyRow& w) { return std::to_string(w.shadowPasses); }},
     {"gl_calls", [](const AccuracyReport&, const AccuracyRow& w) { return std::to_string(w.glCalls); }},
     {"fragments", [](const AccuracyReport&, const AccuracyRow& w) { return std::to_string(w.fragments); }},
-    {"rms_percent", [](const AccuracyReport&, const AccuracyRow& w) { return fixed(w.error.rmsPercent, 3); }},
-    {"max_error_percent", [](const AccuracyReport&, const AccuracyRow& w) { return fixed(w.error.maxErrorPercent, 3); }},
+    {"rms_percent", [](const AccuracyReport&, const AccuracyRow& w) { return fixedText(w.error.rmsPercent, 3); }},
+    {"max_error_percent", [](const AccuracyReport&, const AccuracyRow& w) { return fixedText(w.error.maxErrorPercent, 3); }},
     {"share_over_5_percent",
-     [](const AccuracyReport&, const AccuracyRow& w) { return fixed(w.error.shareOver5Percent, 3); }},
+     [](const AccuracyReport&, const AccuracyRow& w) { return fixedText(w.error.shareOver5Percent, 3); }},
     {"single_pass_rms_percent",
-     [](const AccuracyReport& r, const AccuracyRow&) { return fixed(r.singlePass.error.rmsPercent, 3); }},
+     [](const AccuracyReport& r, const AccuracyRow&) { return fixedText(r.singlePass.error.rmsPercent, 3); }},
     // Empty (JSON null) when the reference came from a file: its time is unknown.
     {"speedup_over_reference",
-     [](const AccuracyReport& r, const AccuracyRow& w) { return r.referenceSeconds > 0 ? fixed(speedup(r, w), 2) : ""; }},
+     [](const AccuracyReport& r, const AccuracyRow& w) { return r.referenceSeconds > 0 ? fixedText(speedup(r, w), 2) : ""; }},
 };
 
 }  // namespace
@@ -116,9 +111,9 @@ std::string resultsJson(const AccuracyReport& r) {
   };
   o << "{\n  \"scene\": " << jsonString(r.scene) << ",\n  \"width\": " << r.width << ",\n  \"height\": " << r.height
     << ",\n  \"repeat\": " << r.repeat << ",\n  \"reference\": " << jsonString(r.reference)
-    << ",\n  \"reference_seconds\": " << fixed(r.referenceSeconds, 3)
-    << ",\n  \"reference_luminance_range\": [" << fixed(r.singlePass.error.referenceMin, 6) << ", "
-    << fixed(r.singlePass.error.referenceMax, 6) << "]"
+    << ",\n  \"reference_seconds\": " << fixedText(r.referenceSeconds, 3)
+    << ",\n  \"reference_luminance_range\": [" << fixedText(r.singlePass.error.referenceMin, 6) << ", "
+    << fixedText(r.singlePass.error.referenceMax, 6) << "]"
     << ",\n  \"error_measure\": \"RMS of Rec. 709 luminance (0.2126 R + 0.7152 G + 0.0722 B of the 8-bit values / 255, "
        "the reference quantised as the pipeline quantises) over the reference's luminance range, in percent\""
     << ",\n  \"keys\": [";
@@ -147,11 +142,11 @@ std::string reportHtml(const AccuracyReport& r, const std::string& plotSvg) {
   o << "<h1>What accuracy costs: " << html(r.scene) << "</h1>\n<p>" << r.width << "&times;" << r.height
     << ", pipeline times " << (r.repeat > 1 ? "the median of " + std::to_string(r.repeat) + " runs" : std::string("of one run"))
     << ". Reference: " << html(r.reference);
-  if (r.referenceSeconds > 0) o << ", " << fixed(r.referenceSeconds, 2) << " s";
+  if (r.referenceSeconds > 0) o << ", " << fixedText(r.referenceSeconds, 2) << " s";
   o << ". Error: RMS of the luminance difference (Rec. 709, on the 8-bit values) over the reference's luminance "
-       "range " << fixed(r.singlePass.error.referenceMin, 3) << "&ndash;" << fixed(r.singlePass.error.referenceMax, 3)
+       "range " << fixedText(r.singlePass.error.referenceMin, 3) << "&ndash;" << fixedText(r.singlePass.error.referenceMax, 3)
     << " (the 1997 paper's measure, &sect;7.4). Single pass (every multi-pass effect off): "
-    << fixed(r.singlePass.error.rmsPercent, 2) << " %. Rows on the Pareto front (no other setting both faster and more accurate) are green; click a heading to sort. Plot marks are the rows' numbers (#)."
+    << fixedText(r.singlePass.error.rmsPercent, 2) << " %. Rows on the Pareto front (no other setting both faster and more accurate) are green; click a heading to sort. Plot marks are the rows' numbers (#)."
     << "</p>\n";
   o << "<h2>Time against error</h2>\n" << plotSvg << "\n<h2>Settings</h2>\n<table id=\"t\"><thead><tr><th>#</th><th>setting</th>";
   for (const std::string& k : r.keys) o << "<th>" << html(k) << "</th>";
@@ -172,13 +167,13 @@ std::string reportHtml(const AccuracyReport& r, const std::string& plotSvg) {
       << "</figcaption></figure>\n";
   };
   figure(r.referenceImage, "reference (" + r.reference + ")");
-  figure(r.singlePass.image, "single pass: " + fixed(r.singlePass.error.rmsPercent, 2) + " % RMS");
+  figure(r.singlePass.image, "single pass: " + fixedText(r.singlePass.error.rmsPercent, 2) + " % RMS");
   figure(r.singlePass.difference, "single pass, difference");
   o << "</div>\n";
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const AccuracyRow& w = r.rows[i];
     o << "<h3>#" << i << " " << html(w.label) << "</h3>\n<div class=\"imgs\">\n";
-    figure(w.image, "pipeline: " + fixed(w.error.rmsPercent, 2) + " % RMS, " + fixed(w.seconds, 3) + " s");
+    figure(w.image, "pipeline: " + fixedText(w.error.rmsPercent, 2) + " % RMS, " + fixedText(w.seconds, 3) + " s");
     figure(w.difference, "difference");
     figure(r.referenceImage, "reference");
     o << "</div>\n";
