@@ -45,6 +45,7 @@ constexpr EmulatedDeparture kEmulatedDepartures[] = {
     {"lighting_vertex_w", kLightingUndividedEye},
     {"fog_hint_fastest", kFogHintIgnored},
     {"scalar_call_vector_param", kScalarCallVectorParam},
+    {"shininess0_attenuated", kShininess0Attenuated},
 };
 
 // Totals over many scripts, per buffer: the agreement table.
@@ -109,9 +110,16 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
   for (std::size_t k = 0; k < ours.snapshots.size() && plainConforms; ++k)
     plainConforms = compareBuffers(ours.snapshots[k], mesa.snapshots[k], bounds, 0).conforms();
   std::vector<std::pair<std::string, MprReplay>> departureRuns;
-  if (!plainConforms)
-    for (const EmulatedDeparture& d : kEmulatedDepartures)
+  if (!plainConforms) {
+    unsigned allBits = 0;
+    for (const EmulatedDeparture& d : kEmulatedDepartures) {
       departureRuns.emplace_back(d.name, replayOnMpr(script, mesaProfile(), d.bits));
+      allBits |= d.bits;
+    }
+    // Last, all of them at once: a vertex lit at w != 1 under an attenuated
+    // light shows two departures in one value.
+    departureRuns.emplace_back("combined", replayOnMpr(script, mesaProfile(), allBits));
+  }
   const bool colourMaterialBack = !plainConforms && showsColourMaterialBackInBegin(script);
   std::string errorsDeparture;
   if (ours.glErrors != mesa.glErrors)

@@ -40,6 +40,7 @@ enum MesaDeparture : unsigned {
   kLightingUndividedEye = 1u << 1,     // vertices lit at the undivided eye xyz when w != 1 (lighting_vertex_w.gls)
   kFogHintIgnored = 1u << 2,           // GL_FOG_HINT GL_FASTEST fogs per fragment too (fog_hint_fastest.gls)
   kScalarCallVectorParam = 1u << 3,    // glFogf/glLightf/glMaterialf/glLightModelf take a vector pname as (v,0,0,0)
+  kShininess0Attenuated = 1u << 4,     // shininess 0 with a spot or attenuated light: specular (N.L)^(N.L) (shininess0_attenuated.gls)
 };
 
 // Counters a renderer reports with --stats and a benchmark divides by time.
@@ -70,6 +71,7 @@ class GLContext {
   const PipelineCounters& counters() const { settle(); return counters_; }
   // Closes the open GL_QUADS draw now (what Mesa's FLUSH_VERTICES does).
   void flushVertices();
+  void closeQuadDraw();  // the open GL_QUADS draw only, not the vbo's flush (a glBegin of another mode)
 
   // --- per-pixel inspection for tests -----------------------------------
   std::uint32_t stencilAt(int x, int y) const { settle(); return fb_.stencil(x, y); }
@@ -154,7 +156,9 @@ class GLContext {
   // --- geometry -------------------------------------------------------------------
   void begin(GLenumValue mode);
   void end();
-  void vertex4f(float x, float y, float z, float w);
+  // size: the call's arity (glVertex2f 2, glVertex3f 3, glVertex4f 4), which
+  // Mesa's vbo keeps in its vertex format (see vboAttribute).
+  void vertex4f(float x, float y, float z, float w, int size = 4);
   void rectf(float x1, float y1, float x2, float y2);
   bool insideBeginEnd() const { return inBegin_; }
 
@@ -215,6 +219,19 @@ class GLContext {
     std::vector<ClipVertex> waiting;   // processed, not yet drawn (only while !clipped)
   };
 
+  // Mesa's vbo vertex format (vbo_exec_api.c): the size of each per-vertex
+  // attribute in its vertex buffer, 0 until first seen after a flush. An
+  // attribute that grows (vbo_exec_fixup_vertex) makes the vbo draw what it
+  // holds and go on in a new buffer (vbo_exec_wrap_upgrade_vertex): inside
+  // glBegin/glEnd the block is cut there, the unfinished primitive's vertices
+  // copied on (vbo_copy_vertices). Each piece is a draw of its own, which
+  // decides which quads share the draw module's clipping decision.
+  enum VboSlot : int { kVboPosition, kVboColor, kVboNormal, kVboMaterial, kVboSlots = kVboMaterial + 10 };
+  void vboAttribute(int slot, int size);
+  void setCurrentColor(const Vec4& c);
+  void drawQuadsPiece(std::vector<ClipVertex> piece);      // one GL_QUADS draw piece
+  void drawQuadStripPiece(const std::vector<ClipVertex>& piece);
+
   void setError(GLenumValue e);
   bool checkOutsideBeginEnd();
   void setCapability(GLenumValue cap, bool on);
@@ -263,6 +280,11 @@ class GLContext {
   bool lightingEnabled_ = false;
   LightingState lighting_;
   bool colorMaterialEnabled_ = false;
+  bool settingTrackedMaterial_ = false;  // applyColorMaterial's own materialfv
+  std::array<std::uint8_t, kVboSlots> vboSize_{};  // Mesa's vbo vertex format (vboAttribute)
+  bool vboStored_ = false;                          // a glBegin since the last flush (FLUSH_STORED_VERTICES)
+  std::size_t vboVertexCount_ = 0;                  // vertices in the vbo's buffer since it was last drawn
+  std::vector<std::size_t> blockWraps_;             // where the vbo cut this block (vertex indices)
   GLenumValue colorMaterialFace_, colorMaterialMode_;
   Vec4 currentColor_{1, 1, 1, 1};
   Vec3 currentNormal_{0, 0, 1};

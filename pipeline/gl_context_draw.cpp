@@ -242,15 +242,19 @@ void GLContext::begin(GLenumValue mode) {
     default: return setError(GL_INVALID_ENUM);
   }
   // Only another GL_QUADS block can join the open quad draw.
-  if (primitive_ != PrimitiveType::Quads) flushVertices();
+  if (primitive_ != PrimitiveType::Quads) closeQuadDraw();
   inBegin_ = true;
+  vboStored_ = true;
+  blockWraps_.clear();
   vertices_.clear();
   blockMaterials_.assign(1, lighting_.material);
   blockMaterialUsed_ = false;
 }
 
-void GLContext::vertex4f(float x, float y, float z, float w) {
+void GLContext::vertex4f(float x, float y, float z, float w, int size) {
   if (!inBegin_) return;  // outside glBegin/glEnd GL leaves the result undefined; ignore
+  vboAttribute(kVboPosition, size);
+  ++vboVertexCount_;
   vertices_.push_back({Vec4(x, y, z, w), currentColor_, currentNormal_,
                        static_cast<std::uint32_t>(blockMaterials_.size() - 1)});
   blockMaterialUsed_ = true;
@@ -262,7 +266,38 @@ void GLContext::settle() const {
   if (quadDraw_.open) const_cast<GLContext*>(this)->flushVertices();
 }
 
+void GLContext::vboAttribute(int slot, int size) {
+  auto& current = vboSize_[static_cast<std::size_t>(slot)];
+  if (size <= current) return;  // the same size or smaller: filled in, no wrap
+  const bool first = current == 0;
+  current = static_cast<std::uint8_t>(size);
+  if (inBegin_) {
+    // vbo_exec_wrap_buffers: what the buffer holds is drawn, this block is
+    // cut here (end() draws the pieces).
+    if (!vertices_.empty() || vboVertexCount_ > 0) blockWraps_.push_back(vertices_.size());
+  } else if (vboVertexCount_ > 0) {
+    closeQuadDraw();
+    // vbo_exec_wrap_upgrade_vertex's heuristic: an attribute first seen
+    // outside glBegin/glEnd after more than 8 vertices starts a new format.
+    if (first && vboVertexCount_ > 8) {
+      vboSize_.fill(0);
+      current = static_cast<std::uint8_t>(size);
+    }
+  }
+  vboVertexCount_ = 0;
+}
+
 void GLContext::flushVertices() {
+  // FLUSH_VERTICES: the stored vertices are drawn and, after a glBegin, the
+  // vbo's vertex format starts empty (vbo_exec_FlushVertices_internal,
+  // vbo_reset_all_attr).
+  closeQuadDraw();
+  if (vboStored_) vboSize_.fill(0);
+  vboStored_ = false;
+  vboVertexCount_ = 0;
+}
+
+void GLContext::closeQuadDraw() {
   if (!quadDraw_.open) return;
   quadDraw_.open = false;
   std::vector<ClipVertex> waiting;
@@ -302,6 +337,14 @@ ClipVertex GLContext::processVertex(const Vertex& v) const {
   if (lightingEnabled_) {
     LightingState s = lighting_;
     s.material = blockMaterials_[v.material];
+    if (departures_ & kShininess0Attenuated) {
+      // ffvertex_prog.c make_state_key: shininess zero on the front (and the
+      // back when two-sided) for the whole draw.
+      bool zero = true;
+      for (const auto& materials : blockMaterials_)
+        zero = zero && materials[0].shininess == 0.0f && (!s.model.twoSide || materials[1].shininess == 0.0f);
+      s.mesaShininess0Attenuated = zero;
+    }
     if (colorMaterialEnabled_) {
       // The vertex's own colour feeds the tracked material parameter.
       const Vec4 c = v.color;
@@ -366,7 +409,36 @@ void GLContext::end() {
   std::vector<ClipVertex> processed;
   processed.reserve(vertices_.size());
   for (const Vertex& v : vertices_) processed.push_back(processVertex(v));
-  if (primitive_ == PrimitiveType::QuadStrip) {
+  std::vector<std::size_t> wraps;
+  wraps.swap(blockWraps_);
+  if (!wraps.empty() && (primitive_ == PrimitiveType::Quads || primitive_ == PrimitiveType::QuadStrip)) {
+    // The vbo cut the block (vboAttribute): the draw held so far is drawn,
+    // then each piece up to a cut as a draw of its own; the vertices of the
+    // unfinished primitive at a cut begin the next piece (vbo_copy_vertices).
+    closeQuadDraw();
+    std::size_t start = 0;
+    for (const std::size_t w : wraps) {
+      const std::size_t n = w - start;
+      const std::vector<ClipVertex> piece(processed.begin() + static_cast<std::ptrdiff_t>(start),
+                                          processed.begin() + static_cast<std::ptrdiff_t>(w));
+      if (primitive_ == PrimitiveType::Quads) {
+        drawQuadsPiece(piece);
+        closeQuadDraw();
+      } else {
+        drawQuadStripPiece(piece);
+      }
+      const std::size_t copied = primitive_ == PrimitiveType::Quads ? n % 4 : (n <= 1 ? n : 2 + n % 2);
+      start = w - copied;
+    }
+    processed.erase(processed.begin(), processed.begin() + static_cast<std::ptrdiff_t>(start));
+  }
+  if (primitive_ == PrimitiveType::QuadStrip) return drawQuadStripPiece(processed);
+  if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
+  drawQuadsPiece(std::move(processed));
+}
+
+void GLContext::drawQuadStripPiece(const std::vector<ClipVertex>& processed) {
+  {
     // A quad strip is (2, 0, 3) then (0, 1, 3) per quad through the draw
     // module's pipeline (draw_decompose_tmp.h, QUAD(2, 0, 1, 3)), which runs
     // when any vertex lies outside a clip plane; otherwise llvmpipe's setup
@@ -378,10 +450,11 @@ void GLContext::end() {
     bool anyOutside = false;
     for (std::size_t i = 0; i < (processed.size() & ~std::size_t{1}); ++i)
       anyOutside = anyOutside || drawClipMask(processed[i].clip, userPlanes) != 0;
-    return drawProcessed(primitive_, processed, false, !anyOutside);
+    return drawProcessed(PrimitiveType::QuadStrip, processed, false, !anyOutside);
   }
-  if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
+}
 
+void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
   // llvmpipe draws quads as MPR does, (0, 1, 2) and (0, 2, 3), except when
   // Mesa's draw module runs its pipeline, which it does when any vertex of
   // the draw lies outside a clip plane: then draw_decompose_tmp.h splits each
@@ -392,10 +465,13 @@ void GLContext::end() {
   // a later one: blocks wait in quadDraw_ until the draw is known to clip or
   // is closed.
   const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
+  // As for strips, the draw is trimmed to whole quads first (draw_pt.c
+  // draw_pt_trim_count): vertices after the last whole quad take no part.
   bool anyOutside = false;
-  for (const ClipVertex& cv : processed) anyOutside = anyOutside || drawClipMask(cv.clip, userPlanes) != 0;
+  for (std::size_t i = 0; i < (processed.size() & ~std::size_t{3}); ++i)
+    anyOutside = anyOutside || drawClipMask(processed[i].clip, userPlanes) != 0;
   if (!quadDraw_.open || quadDraw_.vertexCount % 4 != 0) {
-    flushVertices();
+    closeQuadDraw();
     quadDraw_ = OpenQuadDraw{true, false, 0, {}};
   }
   quadDraw_.vertexCount += processed.size();

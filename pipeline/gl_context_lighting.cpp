@@ -110,18 +110,42 @@ void GLContext::materialfv(GLenumValue face, GLenumValue pname, const float* p, 
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return setError(GL_INVALID_ENUM);
   if (count < expectedCount(pname)) return setError(GL_INVALID_VALUE);
   if (pname == GL_SHININESS && (p[0] < 0.0f || p[0] > 128.0f)) return setError(GL_INVALID_VALUE);
+  switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE:
+    case GL_SHININESS: case GL_COLOR_INDEXES: break;
+    default: return setError(GL_INVALID_ENUM);
+  }
   for (int side = 0; side < 2; ++side) {
     if ((side == 0 && face == GL_BACK) || (side == 1 && face == GL_FRONT)) continue;
+    // A parameter that tracks the current colour tracks it "at all times"
+    // (glColorMaterial): a glMaterial of it is without effect while
+    // GL_COLOR_MATERIAL is enabled, as Mesa's vbo_Materialfv skips it
+    // (_ColorMaterialBitmask); GL 1.1 section 2.13.3 does not say otherwise.
+    const bool sideTracked = colorMaterialEnabled_ && !settingTrackedMaterial_ &&
+                             !((side == 0 && colorMaterialFace_ == GL_BACK) ||
+                               (side == 1 && colorMaterialFace_ == GL_FRONT));
+    auto tracked = [&](GLenumValue parameter) {
+      return sideTracked && (colorMaterialMode_ == parameter ||
+                             (colorMaterialMode_ == GL_AMBIENT_AND_DIFFUSE &&
+                              (parameter == GL_AMBIENT || parameter == GL_DIFFUSE)));
+    };
     Material& m = lighting_.material[side];
-    switch (pname) {
-      case GL_AMBIENT: m.ambient = vec4From(p); break;
-      case GL_DIFFUSE: m.diffuse = vec4From(p); break;
-      case GL_SPECULAR: m.specular = vec4From(p); break;
-      case GL_EMISSION: m.emission = vec4From(p); break;
-      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = vec4From(p); break;
-      case GL_SHININESS: m.shininess = p[0]; break;
-      case GL_COLOR_INDEXES: break;
-      default: return setError(GL_INVALID_ENUM);
+    const Vec4 v = pname == GL_SHININESS || pname == GL_COLOR_INDEXES ? Vec4(0.0f) : vec4From(p);
+    // Each material parameter the call sets is a vbo attribute (MAT_ATTR),
+    // in vbo_Materialfv's order: emission, ambient, diffuse, specular,
+    // shininess.
+    auto set = [&](Vec4& target, int property, GLenumValue parameter) {
+      if (tracked(parameter)) return;
+      if (!settingTrackedMaterial_) vboAttribute(kVboMaterial + side * 5 + property, 4);
+      target = v;
+    };
+    if (pname == GL_EMISSION) set(m.emission, 0, GL_EMISSION);
+    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) set(m.ambient, 1, GL_AMBIENT);
+    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) set(m.diffuse, 2, GL_DIFFUSE);
+    if (pname == GL_SPECULAR) set(m.specular, 3, GL_SPECULAR);
+    if (pname == GL_SHININESS) {
+      vboAttribute(kVboMaterial + side * 5 + 4, 1);
+      m.shininess = p[0];
     }
   }
   // Inside glBegin/glEnd the change applies to the vertices that follow
@@ -150,16 +174,24 @@ void GLContext::applyColorMaterial() {
   // the current colour (GL 1.1 section 2.13.3).
   const float c[4] = {currentColor_.r, currentColor_.g, currentColor_.b, currentColor_.a};
   const bool wasInBegin = inBegin_;
+  settingTrackedMaterial_ = true;
   materialfv(colorMaterialFace_, colorMaterialMode_, c, 4);
+  settingTrackedMaterial_ = false;
   inBegin_ = wasInBegin;
 }
 
 void GLContext::color3f(float r, float g, float b) {
-  color4f(r, g, b, (departures_ & kColor3KeepsAlpha) ? currentColor_.a : 1.0f);
+  vboAttribute(kVboColor, 3);
+  setCurrentColor(Vec4(r, g, b, (departures_ & kColor3KeepsAlpha) ? currentColor_.a : 1.0f));
 }
 
 void GLContext::color4f(float r, float g, float b, float a) {
-  currentColor_ = Vec4(r, g, b, a);
+  vboAttribute(kVboColor, 4);
+  setCurrentColor(Vec4(r, g, b, a));
+}
+
+void GLContext::setCurrentColor(const Vec4& c) {
+  currentColor_ = c;
   if (colorMaterialEnabled_) applyColorMaterial();
 }
 
@@ -167,6 +199,9 @@ void GLContext::color4ub(std::uint8_t r, std::uint8_t g, std::uint8_t b, std::ui
   color4f(r / 255.0f, g / 255.0f, b / 255.0f, a / 255.0f);
 }
 
-void GLContext::normal3f(float x, float y, float z) { currentNormal_ = Vec3(x, y, z); }
+void GLContext::normal3f(float x, float y, float z) {
+  vboAttribute(kVboNormal, 3);
+  currentNormal_ = Vec3(x, y, z);
+}
 
 }  // namespace mpr

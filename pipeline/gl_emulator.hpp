@@ -90,8 +90,8 @@ class GLEmulator final : public GLApi {
   void normal3f(GLfloat x, GLfloat y, GLfloat z) override { gl_.normal3f(x, y, z); }
   void begin(GLenum mode) override { gl_.begin(mode); }
   void end() override { gl_.end(); }
-  void vertex2f(GLfloat x, GLfloat y) override { gl_.vertex4f(x, y, 0.0f, 1.0f); }
-  void vertex3f(GLfloat x, GLfloat y, GLfloat z) override { gl_.vertex4f(x, y, z, 1.0f); }
+  void vertex2f(GLfloat x, GLfloat y) override { gl_.vertex4f(x, y, 0.0f, 1.0f, 2); }
+  void vertex3f(GLfloat x, GLfloat y, GLfloat z) override { gl_.vertex4f(x, y, z, 1.0f, 3); }
   void vertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) override { gl_.vertex4f(x, y, z, w); }
   void rectf(GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2) override { gl_.rectf(x1, y1, x2, y2); }
   void accum(GLenum op, GLfloat value) override { gl_.accum(op, value); }

@@ -43,7 +43,10 @@ std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& ho
   GLEmulator emulator(gl);
   for (std::size_t i = 0; i < script.commands.size() && i < commands; ++i) {
     const ScriptCommand& cmd = script.commands[i];
-    if (!mayJoinQuadDraw(cmd)) gl.flushVertices();
+    // glBegin of another mode closes the quad draw but is no flush of the
+    // vbo (its vertex format stays).
+    if (cmd.kind == ScriptCommand::Kind::Call && cmd.call == GLCall::Begin) gl.closeQuadDraw();
+    else if (!mayJoinQuadDraw(cmd)) gl.flushVertices();
     switch (cmd.kind) {
       case ScriptCommand::Kind::WindowMap:
       case ScriptCommand::Kind::FragmentCount:

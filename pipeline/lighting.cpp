@@ -50,7 +50,11 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
       const float nDotH = dot3(n, normalized(toLight + toEye));
       // max(N.H, 0)^shininess; GL leaves 0^0 open and llvmpipe takes it as 1
       // (shininess 0, the default, with N.H <= 0: full specular).
-      const float specular = nDotH > 0.0f ? std::pow(nDotH, m.shininess) : (m.shininess == 0.0f ? 1.0f : 0.0f);
+      float specular = nDotH > 0.0f ? std::pow(nDotH, m.shininess) : (m.shininess == 0.0f ? 1.0f : 0.0f);
+      const bool attenuated = l.spotCutoff != 180.0f ||
+                              (l.position.w != 0.0f && (l.constantAttenuation != 1.0f || l.linearAttenuation != 0.0f ||
+                                                        l.quadraticAttenuation != 0.0f));
+      if (s.mesaShininess0Attenuated && attenuated) specular = std::pow(nDotL, std::min(nDotL, 128.0f));
       if (specular != 0.0f) {
         // An overflowed power times a zero colour (0 x infinity) is NaN;
         // llvmpipe draws such a vertex as if the term were 0 (measured,

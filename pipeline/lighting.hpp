@@ -43,6 +43,13 @@ struct LightingState {
   std::array<LightSource, kMaxLights> lights;
   LightModel model;
   std::array<Material, 2> material;  // [0] front, [1] back
+  // Emulates Mesa 22.3's fixed-function program (`mpr conform` only, README
+  // "Known Mesa departures", shininess0_attenuated): with every shininess 0
+  // (material_shininess_is_zero) its dot products are all N.VP, so for a light
+  // with a spot cutoff or a positional light with attenuation (ffvertex_prog.c
+  // calculate_light_attenuation, then LIT) the specular factor is
+  // (N.VP)^(N.VP) instead of 1.
+  bool mesaShininess0Attenuated = false;
 };
 
 // The lit colour of a vertex at eye position `eye` with unit or non-unit eye
