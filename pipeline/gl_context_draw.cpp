@@ -9,6 +9,7 @@
 
 #include "pipeline/gl_context.hpp"
 #include "pipeline/llvmpipe_depth.hpp"
+#include "pipeline/mesa_matrix_inverse.hpp"
 #include "util/transforms.hpp"
 #include "raster/triangle_rasterizer.hpp"
 
@@ -182,9 +183,11 @@ void GLContext::end() {
   mvp_ = multiply(projection_.top(), modelview_.top());
   normalMatrix_ = glm::transpose(glm::inverse(glm::mat3(modelview_.top())));
   clipPlanesClip_ = viewVolumePlanes();
-  const Mat4 projInverse = glm::inverse(projection_.top());
+  // _mesa_update_clip_plane: the eye plane by the projection's inverse as
+  // Mesa keeps it (the clip-space planes st_atom_clip.c hands the draw module).
+  const Mat4 projInverse = mesaInverse(projection_.top());
   for (int i = 0; i < 6; ++i)
-    if (clipPlaneEnabled_[i]) clipPlanesClip_.push_back(clipPlanesEye_[i] * projInverse);
+    if (clipPlaneEnabled_[i]) clipPlanesClip_.push_back(mesaTransformRowVector(clipPlanesEye_[i], projInverse));
   if (windowMap_) {
     // The end-of-pipeline map: what lands in the viewport is |u| <= q and
     // |v| <= q (so q >= 0), which is linear in clip coordinates (u w is

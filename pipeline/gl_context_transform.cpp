@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pipeline/gl_context.hpp"
+#include "pipeline/mesa_matrix_inverse.hpp"
 #include "util/transforms.hpp"
 
 namespace mpr {
@@ -94,7 +95,9 @@ void GLContext::clipPlane(GLenumValue plane, const double eq[4]) {
   // the inverse of the modelview matrix current when it is specified.
   const Vec4 p(static_cast<float>(eq[0]), static_cast<float>(eq[1]), static_cast<float>(eq[2]),
                static_cast<float>(eq[3]));
-  clipPlanesEye_[plane - GL_CLIP_PLANE0] = p * glm::inverse(modelview_.top());
+  // Through the inverse Mesa keeps (m_matrix.c) and _mesa_transform_vector's
+  // sums, so that llvmpipe's clipper and MPR's cut at the same place.
+  clipPlanesEye_[plane - GL_CLIP_PLANE0] = mesaTransformRowVector(p, mesaInverse(modelview_.top()));
 }
 
 }  // namespace mpr
