@@ -251,6 +251,13 @@ void GLContext::drawQuadStripPiece(const std::vector<ClipVertex>& processed) {
 }
 
 void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
+  // Flat shaded, a quad keeps its last vertex provoking in both triangles:
+  // llvmpipe gets (0, 1, 3) and (1, 2, 3) whether or not the draw clips
+  // (measured against GL_TRIANGLES in each order: flat_quad_depth_order.gls).
+  if (flatShading_) {
+    closeQuadDraw();
+    return drawProcessed(PrimitiveType::Quads, processed, true);
+  }
   // llvmpipe draws quads as MPR does, (0, 1, 2) and (0, 2, 3), except when
   // Mesa's draw module runs its pipeline, which it does when any vertex of
   // the draw lies outside a clip plane: then draw_decompose_tmp.h splits each
