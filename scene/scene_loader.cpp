@@ -19,6 +19,7 @@
 #include "util/transforms.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/primitives.hpp"
+#include "scene/ward_fit.hpp"
 
 namespace mpr {
 namespace {
@@ -350,14 +351,14 @@ class Loader {
       // 1997 paper eq. (6): the Chi-square fit of Ward's isotropic Gaussian by
       // Phong: exponent 1.999 / alpha^2, scale 0.0398 * exponent.
       const double alpha = number(n["roughness"], where + " roughness");
-      const double exponent = alpha > 0.0 ? 1.999 / (alpha * alpha) : 1e30;
+      const double exponent = alpha > 0.0 ? kWardFitExponent / (alpha * alpha) : 1e30;
       if (!(exponent <= 128.0))
         fail(n["roughness"], where + " roughness must be at least 0.125: eq. (6) gives a Phong exponent of 1.999/alpha^2, "
                                  "and GL's largest is 128");
       m.shininess = static_cast<float>(exponent);
       m.roughness = static_cast<float>(alpha);
       m.wardSpecular = m.specular;
-      m.specular *= static_cast<float>(0.0398 * exponent);
+      m.specular *= static_cast<float>(kWardFitScale * exponent);
     }
     if (n["reflectance"]) m.reflectance = static_cast<float>(number(n["reflectance"], where + " reflectance", 0.0, 1.0));
     if (n["ior"]) {
