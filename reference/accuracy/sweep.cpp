@@ -110,7 +110,7 @@ std::string sceneFingerprint(const Scene& s) {
   }
   for (const char* k : {"render.width", "render.height", "render.recursion_depth",
                                "render.shadow_recursion_depth", "render.soft_shadow_samples",
-                               "render.antialias_samples", "render.shadows", "render.reflections",
+                               "render.soft_shadow_method", "render.antialias_samples", "render.shadows", "render.reflections",
                                "render.refractions", "render.translucency", "render.frosted", "render.profile",
                                "render.refraction_map", "render.tessellation"})
     o << "R" << *sceneValue(s, k);
@@ -127,6 +127,10 @@ std::optional<std::string> sceneValue(const Scene& s, const std::string& key) {
   if (key == "render.recursion_depth") return std::to_string(r.recursionDepth);
   if (key == "render.shadow_recursion_depth") return std::to_string(r.shadowRecursionDepth);
   if (key == "render.soft_shadow_samples") return std::to_string(r.softShadowSamples);
+  if (key == "render.soft_shadow_method")
+    return std::string(r.softShadowMethod == SoftShadowMethod::Images           ? "images"
+                       : r.softShadowMethod == SoftShadowMethod::DarknessLevels ? "darkness_levels"
+                                                                                : "pivot");
   if (key == "render.antialias_samples") return std::to_string(r.antialiasSamples);
   if (key == "render.shadows") return b(r.shadows);
   if (key == "render.reflections") return b(r.reflections);
