@@ -50,6 +50,7 @@ struct SceneMaterial {
   float ior = 1.5f;             // refractive, translucent, frosted
   float transmittance = 0.9f;   // refractive, translucent, frosted
   float fogDistance = 1.0f;     // translucent: distance of full fog
+  float thickness = 0.0f;       // refracting: a slab of this thickness (in-out refraction, 1997 §2); 0: 1994's change of medium
   float shear = 0.05f;          // frosted: stochastic shear amount
   int samples = 8;              // frosted: images accumulated
   bool specularKind() const { return kind != MaterialKind::Diffuse; }

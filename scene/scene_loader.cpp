@@ -62,6 +62,9 @@ const std::vector<KeySpec> kMaterialKeys = {
     {"ior", "number > 0", "refractive, translucent, frosted: index of refraction, default 1.5"},
     {"transmittance", "number in [0, 1]", "refractive, translucent, frosted: fraction transmitted, default 0.9"},
     {"fog_distance", "number > 0", "translucent and frosted: distance behind the face of full fog, default 1"},
+    {"thickness", "number >= 0",
+     "refractive, translucent, frosted: a slab of this thickness, its view and light shifted, not turned (in-out "
+     "refraction, 1997 §2); default 0, one change of medium (1994)"},
     {"shear", "number >= 0", "frosted: the stochastic shear's multiplier m (1997 section 3), default 0.05"},
     {"samples", "integer >= 1", "frosted and glossy mirrors: sheared images accumulated, default 8"},
 };
@@ -371,6 +374,14 @@ class Loader {
     }
     if (n["transmittance"]) m.transmittance = static_cast<float>(number(n["transmittance"], where + " transmittance", 0.0, 1.0));
     if (n["fog_distance"]) m.fogDistance = static_cast<float>(number(n["fog_distance"], where + " fog_distance", 0.0, 1e30, true));
+    if (n["thickness"]) {
+      m.thickness = static_cast<float>(number(n["thickness"], where + " thickness", 0.0, 1e6));
+      const bool refracting =
+          m.kind == MaterialKind::Refractive || m.kind == MaterialKind::Translucent || m.kind == MaterialKind::Frosted;
+      if (!refracting && m.thickness > 0.0f)
+        fail(n["thickness"], where + " thickness is for refracting materials (kind refractive, translucent or frosted): "
+                                     "a slab shifts the view through it; this one is not looked through");
+    }
     if (n["shear"]) m.shear = static_cast<float>(number(n["shear"], where + " shear", 0.0, 1e30));
     if (n["samples"]) m.samples = integer(n["samples"], where + " samples", 1, 1024);
     return m;

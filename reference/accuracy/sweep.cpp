@@ -103,7 +103,7 @@ std::string sceneFingerprint(const Scene& s) {
   for (const SceneMaterial& m : s.materials)
     o << "M" << static_cast<int>(m.kind) << vec(m.diffuse) << vec(m.specular) << vec(m.emission) << m.shininess << ' '
       << m.reflectance << ' ' << m.ior << ' ' << m.transmittance << ' ' << m.fogDistance << ' ' << m.shear << ' '
-      << m.samples << ' ' << m.roughness;
+      << m.samples << ' ' << m.roughness << ' ' << m.thickness;
   for (const SceneObject& ob : s.objects) {
     o << "O" << ob.material << ob.castsShadows << ' ' << ob.mesh.positions.size() << ' ' << ob.mesh.triangles.size();
     if (!ob.mesh.positions.empty()) o << vec(ob.mesh.positions.front()) << vec(ob.mesh.positions.back());

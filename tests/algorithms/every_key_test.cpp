@@ -106,6 +106,7 @@ const std::map<std::string, KeyCase>& cases() {
       {"materials.<name>.ior", {{}, {{"ior: 1.5", "ior: 1.3"}}}},
       {"materials.<name>.transmittance", {{}, {{"transmittance: 0.7", "transmittance: 0.4"}}}},
       {"materials.<name>.fog_distance", {{{"kind: refractive", "kind: translucent"}}, {{"transmittance: 0.7", "transmittance: 0.7, fog_distance: 0.5"}}}},
+      {"materials.<name>.thickness", {{}, {{"transmittance: 0.7", "transmittance: 0.7, thickness: 0.3"}}}},
       {"materials.<name>.shear", {{{"kind: refractive", "kind: frosted"}}, {{"transmittance: 0.7", "transmittance: 0.7, shear: 0.2"}}}},
       {"materials.<name>.samples", {{{"kind: refractive", "kind: frosted"}}, {{"transmittance: 0.7", "transmittance: 0.7, samples: 3"}}}},
       {"objects[]", {{}, {{"objects:\n", "objects:\n  - {name: extra, primitive: box, translate: [0, 0.3, 2], scale: 0.3}\n"}}}},

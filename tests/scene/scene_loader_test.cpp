@@ -104,6 +104,9 @@ TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
             "s.yaml:2:18: material 'm' roughness must be at least 0.125: eq. (6) gives a Phong exponent of "
             "1.999/alpha^2, and GL's largest is 128");
   EXPECT_EQ(errorOf("camera: [1, 2\n"), "s.yaml:2:1: YAML syntax: end of sequence flow not found");
+  EXPECT_EQ(errorOf("materials:\n  m: {kind: mirror, thickness: 0.1}\n"),
+            "s.yaml:2:32: material 'm' thickness is for refracting materials (kind refractive, translucent or "
+            "frosted): a slab shifts the view through it; this one is not looked through");
   // darkness_levels: the levels in the accumulation buffer, every sample counted above SHAD_ZERO.
   const std::string soft = "lights: [{position: [0, 4, 0], radius: 1}]\nrender: {soft_shadow_method: darkness_levels, ";
   EXPECT_EQ(errorOf(soft + "soft_shadow_samples: 64}\n"),
