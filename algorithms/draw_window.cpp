@@ -433,10 +433,65 @@ class WindowRenderer {
     gl_.depthMask(GL_TRUE);
     gl_.enable(GL_BLEND);
     gl_.blendFunc(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA);
-    gl_scene_.enableAllLights();
-    gl_scene_.setFullMaterial(m);
+    if (!(plan_.shadows && cam.level <= plan_.shadowDepth)) {
+      gl_scene_.enableAllLights();
+      gl_scene_.setFullMaterial(m);
+      gl_scene_.drawPolygon(face, true, fromBehind);
+      gl_scene_.disableExtraLights();
+      gl_.disable(GL_BLEND);
+      return;
+    }
+    shadowedFaceColour(cam, face, fromBehind, m);
+  }
+
+  // Mirrors and glass receive shadows (issue 12, bug 4; the 1997 paper
+  // casts shadows on partially specular surfaces, §7.3): in a view with
+  // shadows the face's own colour is drawn as the scene is, the ambient
+  // term first (blended over the view through it with destination alpha
+  // 1 - r, depth ALWAYS, which puts the face's depth back), then per light
+  // the face's pixels (ZERO) raised to SHAD_ZERO, the light's shadow
+  // volumes counted (all but the face's own), the light added where
+  // SHAD_ZERO remains (depth EQUAL, blend DST_ALPHA, ONE: (1 - r) of it),
+  // and the counts back to ZERO. Destination alpha is masked after its
+  // first rendering, so every pass scales by the same 1 - r.
+  void shadowedFaceColour(const ViewCamera& cam, const RefFace& face, bool fromBehind, const SceneMaterial& m) {
+    const std::uint32_t zero = lv_.zero;
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f).data());
+    gl_.disable(GL_LIGHT0);
+    gl_.enable(GL_LIGHTING);
+    gl_scene_.setMaterial(m, true);
     gl_scene_.drawPolygon(face, true, fromBehind);
-    gl_scene_.disableExtraLights();
+    for (int light = 0; light < static_cast<int>(s_.lights.size()); ++light) {
+      const std::string l = std::to_string(light);
+      pass("apply_stencil", "face lit by light " + l + ": its pixels to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)");
+      apply_stencil(gl_, {PaperCompare::Equal, zero, PaperPass::Replace, lv_.shadZero}, lv_);
+      pass("shadow volume", "shadows on the face, light " + l + " | the light's volumes but the face's own, on its pixels");
+      ++counts_.shadowPasses;
+      gl_scene_.setupView(cam);
+      counts_.zfailVolumes += shadows_.drawVolumes(gl_, light, cam, s_.camera, lv_, face.object);
+      pass("light", "the face lit by light " + l + " outside the shadows | blend (DST_ALPHA, ONE)");
+      stencil(gl_, {PaperCompare::Equal, lv_.shadZero, PaperPass::Keep, lv_.shadZero}, lv_);
+      gl_scene_.setupView(cam);
+      gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+      gl_.enable(GL_DEPTH_TEST);
+      gl_.depthFunc(GL_EQUAL);
+      gl_.depthMask(GL_FALSE);
+      gl_.enable(GL_CULL_FACE);
+      gl_.enable(GL_BLEND);
+      gl_.blendFunc(GL_DST_ALPHA, GL_ONE);
+      gl_.enable(GL_LIGHTING);
+      gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
+      gl_.enable(GL_LIGHT0);
+      gl_scene_.setLight(0, s_.lights[static_cast<std::size_t>(light)]);
+      gl_scene_.setMaterial(m, false);
+      gl_scene_.drawPolygon(face, true, fromBehind);
+      ++counts_.lightPasses;
+      pass("apply_stencil", "face back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)");
+      apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, zero}, lv_);
+    }
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl_.depthMask(GL_TRUE);
     gl_.disable(GL_BLEND);
   }
 

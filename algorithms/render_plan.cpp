@@ -38,9 +38,25 @@ std::uint64_t shadowedViews(const RenderPlan& p) {
 }
 }  // namespace
 
+namespace {
+// Mirrors and glass receive shadows (bug 4): every face a shadowed view
+// recurses into has its own colour drawn with a shadow pass and a lit pass
+// per light; the faces a view at level L recurses into are the views at
+// level L + 1.
+std::uint64_t shadowedFaces(const RenderPlan& p) {
+  std::uint64_t faces = 0;
+  if (!p.shadows) return 0;
+  for (int l = 0; l <= std::min(p.shadowDepth, p.recursionDepth - 1); ++l)
+    faces = saturatingAdd(faces, p.predictedViewsAtLevel(l + 1));
+  return faces;
+}
+}  // namespace
+
 std::uint64_t RenderPlan::predictedShadowPasses() const {
-  // draw_all_shadows per light, and draw_ref_shadows per reflected light.
-  return saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(lights + reflectedLights));
+  // draw_all_shadows per light, draw_ref_shadows per reflected light, and
+  // the shadows on each face recursed into, per light.
+  return saturatingAdd(saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(lights + reflectedLights)),
+                       saturatingMul(shadowedFaces(*this), static_cast<std::uint64_t>(lights)));
 }
 
 std::uint64_t RenderPlan::predictedLightPasses() const {
@@ -48,9 +64,11 @@ std::uint64_t RenderPlan::predictedLightPasses() const {
   // drawn (one per level), one elsewhere.
   const std::uint64_t extraLevels =
       saturatingMul(static_cast<std::uint64_t>(darknessLights), static_cast<std::uint64_t>(darknessLevels - 1));
-  return saturatingAdd(saturatingAdd(saturatingMul(predictedViews(), static_cast<std::uint64_t>(lights)),
-                                     saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(reflectedLights))),
-                       saturatingMul(shadowedViews(*this), extraLevels));
+  const std::uint64_t base =
+      saturatingAdd(saturatingAdd(saturatingMul(predictedViews(), static_cast<std::uint64_t>(lights)),
+                                  saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(reflectedLights))),
+                    saturatingMul(shadowedViews(*this), extraLevels));
+  return saturatingAdd(base, saturatingMul(shadowedFaces(*this), static_cast<std::uint64_t>(lights)));
 }
 
 std::uint64_t RenderPlan::predictedPasses() const {

@@ -28,7 +28,8 @@ ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan, bool pivotBas
     const int samples = darknessLevelSamples(scene, light);
     for (int i = 0; i < samples; ++i) {
       const Vec3 at = samples > 1 ? lightSamplePosition(scene, light, i) : light.position;
-      for (const SceneObject& o : scene.objects) {
+      for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+        const SceneObject& o = scene.objects[oi];
         const ShadowRole role = shadowRole(o, scene);
         if (role == ShadowRole::None) continue;
         // Glass has two sides: a refracting face lit from behind shadows the
@@ -43,6 +44,7 @@ ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan, bool pivotBas
         // so a ray through it enters its volume by the light cap unseen, which
         // z-pass does not count: counted behind the surface with caps instead.
         v.alwaysZFail = role == ShadowRole::RefractingFace;
+        v.objectIndex = static_cast<int>(oi);
         if (pivotBase && light.radius > 0.0f) {
           v.volume = pivotBaseVolume(v.volume, light.radius);
           setVolumeTriangles(v);
@@ -141,9 +143,10 @@ std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& 
 }
 
 std::uint64_t ShadowPass::drawVolumes(GLApi& gl, int light, const ViewCamera& view, const Camera& camera,
-                                      const StencilLevels& lv) {
+                                      const StencilLevels& lv, int exclude) {
   std::vector<const VolumeGeometry*> vols;
-  for (const VolumeGeometry& v : volumes_[static_cast<std::size_t>(light)]) vols.push_back(&v);
+  for (const VolumeGeometry& v : volumes_[static_cast<std::size_t>(light)])
+    if (v.objectIndex != exclude || exclude < 0) vols.push_back(&v);
   // darkness_levels counts S samples' volumes at once: volume by volume.
   const bool levels = darknessLevelSamples(scene_, scene_.lights[static_cast<std::size_t>(light)]) > 1;
   return countVolumes(gl, vols, view, camera,

@@ -31,6 +31,7 @@ struct VolumeGeometry {
   // mirror image), so nothing hides the light cap as z-pass assumes.
   bool alwaysZFail = false;
   std::string object;
+  int objectIndex = -1;  // in scene.objects, for a face that must not count its own volume
 };
 
 // Counts `volumes` into the stencil as seen by `view`, only on pixels holding a
@@ -67,9 +68,10 @@ class ShadowPass {
   ShadowPass(const Scene& sampled, const ShadowPass& base);
 
   // Draws light `light`'s volumes as seen by `view` (GL state: the view is set
-  // up by the caller). Returns how many volumes needed z-fail.
+  // up by the caller), all but object `exclude`'s. Returns how many volumes
+  // needed z-fail.
   std::uint64_t drawVolumes(GLApi& gl, int light, const ViewCamera& view, const Camera& camera,
-                            const StencilLevels& levels);
+                            const StencilLevels& levels, int exclude = -1);
   const std::vector<std::string>& warnings() const { return warnings_; }
   const std::vector<VolumeGeometry>& volumes(int light) const { return volumes_[static_cast<std::size_t>(light)]; }
 
