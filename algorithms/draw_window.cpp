@@ -33,9 +33,10 @@ namespace {
 class WindowRenderer {
  public:
   WindowRenderer(const Scene& s, const RenderPlan& p, GLCommandStream& gl,
-                 const std::function<void(const DrawWindowProgress&)>& progress, const ViewSample& sample)
+                 const std::function<void(const DrawWindowProgress&)>& progress, const ViewSample& sample,
+                 const ShadowPass* pivotBase)
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
-        shadows_(s, p), gl_scene_(s, gl, p.shadows || p.reflections) {
+        shadows_(pivotBase ? ShadowPass(s, *pivotBase) : ShadowPass(s, p)), gl_scene_(s, gl, p.shadows || p.reflections) {
     gl_scene_.setViewSample(sample);
     image_ = sample.image;
     if (p.shadows) refLights_ = reflectedLights(s, faces_);
@@ -165,11 +166,54 @@ class WindowRenderer {
                                  std::to_string(lv_.maxShadowDepthAbove()) +
                                  " or more shadow volumes, as many as the stencil bits above SHAD_ZERO count: "
                                  "their shadow may be wrong");
-    pass("light", "lit outside the shadows | draw_normal_objects(Camera, SHAD_ZERO)");
-    draw_normal_objects(cam, lv_.shadZero, &s_.lights[static_cast<std::size_t>(light)]);
+    const PointLight& l = s_.lights[static_cast<std::size_t>(light)];
+    const int levels = darknessLevelSamples(s_, l);
+    if (levels > 1) {
+      darkness_levels(cam, l, levels);
+    } else {
+      pass("light", "lit outside the shadows | draw_normal_objects(Camera, SHAD_ZERO)");
+      draw_normal_objects(cam, lv_.shadZero, &l);
+    }
     pass("apply_stencil", "reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
     apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, lv_.shadZero}, lv_);
     path_.pop_back();
+  }
+
+  // ---- darkness levels (1994, "Soft shadows and caustics", second method) --
+  // The S samples' volumes are counted (a pixel inside k of them holds
+  // SHAD_ZERO + k); "the scene is redrawn with diffuse lighting for areas
+  // whose stencil value is [at] the shadow zero value. All stencil values are
+  // then decremented, and the image is redrawn ... for each darkness level,
+  // accumulating each intermediate image": level j lights the pixels with
+  // k <= j, so a pixel is lit in S - k of the S levels, (S - k) / S of the
+  // light. The image so far is loaded into the accumulation buffer, each
+  // level drawn alone on a cleared colour buffer and added with 1/S, the sum
+  // returned; alpha (destination alpha of the faces) is masked throughout.
+  // The light is drawn from its centre in every level: the images method
+  // lights each sample from its own position (README, "Soft shadows").
+  void darkness_levels(const ViewCamera& cam, const PointLight& light, int levels) {
+    const std::string n = std::to_string(levels);
+    pass("accumulate", "darkness levels | glAccum(GL_LOAD, 1)  // the image so far");
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    gl_.accum(GL_LOAD, 1.0f);
+    for (int j = 0; j < levels; ++j) {
+      const std::string level = "level " + std::to_string(j) + " of " + n;
+      pass("light", level + ": lit where inside at most " + std::to_string(j) +
+                        " volumes | clear the colour; draw_normal_objects(Camera, SHAD_ZERO)");
+      gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);  // apply_to_screen turned all four on
+      gl_.clear(GL_COLOR_BUFFER_BIT);
+      draw_normal_objects(cam, lv_.shadZero, &light);
+      pass("accumulate", level + " | glAccum(GL_ACCUM, 1/" + n + ")");
+      gl_.accum(GL_ACCUM, 1.0f / static_cast<float>(levels));
+      if (j + 1 < levels) {
+        pass("apply_stencil", level + ": step the levels down | apply_stencil(GREATER, SHAD_ZERO, DECR)");
+        apply_to_screen(gl_, {GL_LESS, lv_.shadZero, lv_.max, lv_.max, GL_DECR});
+      }
+    }
+    pass("accumulate", "darkness levels summed | glAccum(GL_RETURN, 1)");
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    gl_.accum(GL_RETURN, 1.0f);
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
 
   // ---- draw_ref_objects(Camera) -------------------------------------------
@@ -389,10 +433,65 @@ class WindowRenderer {
     gl_.depthMask(GL_TRUE);
     gl_.enable(GL_BLEND);
     gl_.blendFunc(GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA);
-    gl_scene_.enableAllLights();
-    gl_scene_.setFullMaterial(m);
+    if (!(plan_.shadows && cam.level <= plan_.shadowDepth)) {
+      gl_scene_.enableAllLights();
+      gl_scene_.setFullMaterial(m);
+      gl_scene_.drawPolygon(face, true, fromBehind);
+      gl_scene_.disableExtraLights();
+      gl_.disable(GL_BLEND);
+      return;
+    }
+    shadowedFaceColour(cam, face, fromBehind, m);
+  }
+
+  // Mirrors and glass receive shadows (issue 12, bug 4; the 1997 paper
+  // casts shadows on partially specular surfaces, §7.3): in a view with
+  // shadows the face's own colour is drawn as the scene is, the ambient
+  // term first (blended over the view through it with destination alpha
+  // 1 - r, depth ALWAYS, which puts the face's depth back), then per light
+  // the face's pixels (ZERO) raised to SHAD_ZERO, the light's shadow
+  // volumes counted (all but the face's own), the light added where
+  // SHAD_ZERO remains (depth EQUAL, blend DST_ALPHA, ONE: (1 - r) of it),
+  // and the counts back to ZERO. Destination alpha is masked after its
+  // first rendering, so every pass scales by the same 1 - r.
+  void shadowedFaceColour(const ViewCamera& cam, const RefFace& face, bool fromBehind, const SceneMaterial& m) {
+    const std::uint32_t zero = lv_.zero;
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+    gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(s_.ambient.x, s_.ambient.y, s_.ambient.z, 1.0f).data());
+    gl_.disable(GL_LIGHT0);
+    gl_.enable(GL_LIGHTING);
+    gl_scene_.setMaterial(m, true);
     gl_scene_.drawPolygon(face, true, fromBehind);
-    gl_scene_.disableExtraLights();
+    for (int light = 0; light < static_cast<int>(s_.lights.size()); ++light) {
+      const std::string l = std::to_string(light);
+      pass("apply_stencil", "face lit by light " + l + ": its pixels to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)");
+      apply_stencil(gl_, {PaperCompare::Equal, zero, PaperPass::Replace, lv_.shadZero}, lv_);
+      pass("shadow volume", "shadows on the face, light " + l + " | the light's volumes but the face's own, on its pixels");
+      ++counts_.shadowPasses;
+      gl_scene_.setupView(cam);
+      counts_.zfailVolumes += shadows_.drawVolumes(gl_, light, cam, s_.camera, lv_, face.object);
+      pass("light", "the face lit by light " + l + " outside the shadows | blend (DST_ALPHA, ONE)");
+      stencil(gl_, {PaperCompare::Equal, lv_.shadZero, PaperPass::Keep, lv_.shadZero}, lv_);
+      gl_scene_.setupView(cam);
+      gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+      gl_.enable(GL_DEPTH_TEST);
+      gl_.depthFunc(GL_EQUAL);
+      gl_.depthMask(GL_FALSE);
+      gl_.enable(GL_CULL_FACE);
+      gl_.enable(GL_BLEND);
+      gl_.blendFunc(GL_DST_ALPHA, GL_ONE);
+      gl_.enable(GL_LIGHTING);
+      gl_.lightModelfv(GL_LIGHT_MODEL_AMBIENT, glFloats(0.0f, 0.0f, 0.0f, 1.0f).data());
+      gl_.enable(GL_LIGHT0);
+      gl_scene_.setLight(0, s_.lights[static_cast<std::size_t>(light)]);
+      gl_scene_.setMaterial(m, false);
+      gl_scene_.drawPolygon(face, true, fromBehind);
+      ++counts_.lightPasses;
+      pass("apply_stencil", "face back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)");
+      apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, zero}, lv_);
+    }
+    gl_.colorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl_.depthMask(GL_TRUE);
     gl_.disable(GL_BLEND);
   }
 
@@ -414,8 +513,8 @@ class WindowRenderer {
 
 DrawWindowCounts drawScene(const Scene& scene, const RenderPlan& plan, GLCommandStream& gl,
                            const std::function<void(const DrawWindowProgress&)>& progress,
-                           const ViewSample& sample) {
-  return WindowRenderer(scene, plan, gl, progress, sample).run();
+                           const ViewSample& sample, const ShadowPass* pivotBase) {
+  return WindowRenderer(scene, plan, gl, progress, sample, pivotBase).run();
 }
 
 }  // namespace mpr

@@ -30,9 +30,13 @@ struct DrawWindowProgress {
   std::string label;
 };
 
+class ShadowPass;
+
 // `sample`: the view of one image of an accumulation (image_samples.hpp).
+// `pivotBase`: the pivot method's volumes, built once from the lights'
+// centres (shadow_pass.hpp); this image's are pivoted from them.
 DrawWindowCounts drawScene(const Scene& scene, const RenderPlan& plan, GLCommandStream& gl,
                            const std::function<void(const DrawWindowProgress&)>& progress = {},
-                           const ViewSample& sample = {});
+                           const ViewSample& sample = {}, const ShadowPass* pivotBase = nullptr);
 
 }  // namespace mpr

@@ -43,7 +43,9 @@ bool hasAreaLight(const Scene& s) {
 }  // namespace
 
 int accumulatedImages(const Scene& s) {
-  const int lightSamples = hasAreaLight(s) ? s.render.softShadowSamples : 1;
+  // darkness_levels sums its light samples inside each image (the levels).
+  const int lightSamples =
+      hasAreaLight(s) && s.render.softShadowMethod != SoftShadowMethod::DarknessLevels ? s.render.softShadowSamples : 1;
   int frosted = 1;
   if (s.render.frosted)
     for (const SceneObject& o : s.objects) {
@@ -91,22 +93,29 @@ ViewSample viewSample(const Scene& s, int i, int n) {
   return v;
 }
 
+Vec3 lightSamplePosition(const Scene& s, const PointLight& l, int i) {
+  const int k = s.render.softShadowSamples;
+  if (k <= 1 || !(l.radius > 0.0f)) return l.position;
+  const DVec2 d = concentricDisc(tablePoint(i % k, k, 3));
+  // The disc facing the scene: its axes perpendicular to light -> centre.
+  DVec3 axis = sceneCentre(s) - DVec3(l.position);
+  if (glm::dot(axis, axis) == 0.0) axis = DVec3(0.0, -1.0, 0.0);
+  axis = glm::normalize(axis);
+  const DVec3 helper = std::abs(axis.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
+  const DVec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
+  return Vec3(DVec3(l.position) + static_cast<double>(l.radius) * (d.x * u + d.y * v));
+}
+
+int darknessLevelSamples(const Scene& s, const PointLight& l) {
+  return s.render.softShadowMethod == SoftShadowMethod::DarknessLevels && l.radius > 0.0f ? s.render.softShadowSamples
+                                                                                           : 1;
+}
+
 Scene lightSampleScene(const Scene& s, int i, int n) {
   Scene out = s;
-  const int k = s.render.softShadowSamples;
-  if (n <= 1 || k <= 1) return out;
-  const DVec3 centre = sceneCentre(s);
-  const DVec2 d = concentricDisc(tablePoint(i % k, k, 3));
-  for (PointLight& l : out.lights) {
-    if (!(l.radius > 0.0f)) continue;
-    // The disc facing the scene: its axes perpendicular to light -> centre.
-    DVec3 axis = centre - DVec3(l.position);
-    if (glm::dot(axis, axis) == 0.0) axis = DVec3(0.0, -1.0, 0.0);
-    axis = glm::normalize(axis);
-    const DVec3 helper = std::abs(axis.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
-    const DVec3 u = glm::normalize(glm::cross(axis, helper)), v = glm::cross(axis, u);
-    l.position = Vec3(DVec3(l.position) + static_cast<double>(l.radius) * (d.x * u + d.y * v));
-  }
+  if (n <= 1 || s.render.softShadowSamples <= 1 || s.render.softShadowMethod == SoftShadowMethod::DarknessLevels)
+    return out;
+  for (PointLight& l : out.lights) l.position = lightSamplePosition(s, l, i);
   return out;
 }
 

@@ -26,7 +26,8 @@ struct ViewSample {
 // depth of field, soft shadows, frosted glass or glossy mirrors (a mirror
 // with a roughness). The antialias (and lens) samples, the light samples
 // and the frosted and glossy faces' shear samples are
-// paired image by image, each table cycled: N = max(A, S, F).
+// paired image by image, each table cycled: N = max(A, S, F) (S = 1 under
+// darkness_levels, which sums its samples within an image).
 int accumulatedImages(const Scene& scene);
 
 // The view of image i of n: the i-th point of a fixed table (a Hammersley
@@ -40,7 +41,18 @@ ViewSample viewSample(const Scene& scene, int i, int n);
 // light samples of one image are not correlated) on the disc of that radius
 // facing the middle of the scene's objects (its bounding box). Lights
 // without a radius stay.
+// (Images and pivot: with darkness_levels every image keeps the lights' centres.)
 Scene lightSampleScene(const Scene& scene, int i, int n);
+
+// Sample i of light `light` (one of scene.lights) on that disc: the
+// position lightSampleScene gives it in image i; its own position without a
+// radius or with one sample.
+Vec3 lightSamplePosition(const Scene& scene, const PointLight& light, int i);
+
+// How many darkness levels light `light` is drawn with (1994's second
+// method): soft_shadow_samples for a light with a radius under
+// darkness_levels, else 1 (one lit pass, or the images method).
+int darknessLevelSamples(const Scene& scene, const PointLight& light);
 
 // The stochastic (X, Y) shear of a frosted face in image i of n (1997 §3):
 // m times a pair of normal deviates, from the i mod `samples`-th point of a

@@ -13,6 +13,7 @@ std::vector<RefFace> findRefFaces(const Scene& scene) {
       f.object = static_cast<int>(o);
       f.kind = m.kind;
       f.ior = m.ior;
+      f.thickness = m.thickness;
       f.fogDistance = m.fogDistance;
       f.shear = m.shear;
       f.color = m.diffuse;

@@ -23,6 +23,7 @@ struct RefFace {
   DVec3 centre{0.0};
   MaterialKind kind = MaterialKind::Mirror;
   double ior = 1.0;            // refractive faces
+  double thickness = 0.0;      // > 0: a slab (in-out refraction, scene/slab_refraction.hpp)
   bool refracts() const { return mpr::refracts(kind); }
   float fogDistance = 1.0f;    // translucent and frosted faces
   float shear = 0.0f;          // frosted faces: the stochastic shear's multiplier m (1997 §3)

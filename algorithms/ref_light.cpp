@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "algorithms/shadow_geometry.hpp"
+#include "scene/slab_refraction.hpp"
 
 namespace mpr {
 
@@ -15,6 +16,14 @@ std::optional<DVec3> refLightPosition(const RefFace& f, DVec3 light) {
     return reflectPoint(light, f.plane());
   }
   if (f.ior == 1.0) return light;  // no bending: the light itself, bit for bit
+  if (f.thickness > 0.0) {
+    // A slab (in-out refraction): the light passes parallel to itself,
+    // shifted sideways as its ray to the centre is; the virtual light is
+    // the light moved by that shift, no critical angle.
+    const DVec3 toCentre = f.centre - light;
+    if (!(glm::length(toCentre) > 0.0)) return std::nullopt;
+    return light + slabShift(glm::normalize(toCentre), f.normal, f.ior, f.thickness);
+  }
   // Snell's law at the face centre, n on the light's side, eta = n_light / n_other.
   const DVec3 n = side > 0.0 ? f.normal : -f.normal;
   const double eta = side > 0.0 ? 1.0 / f.ior : f.ior;
@@ -33,6 +42,7 @@ std::optional<DVec3> refLightPosition(const RefFace& f, DVec3 light) {
 
 DVec3 transferThroughFace(const RefFace& f, DVec3 light, DVec3 ref, DVec3 p) {
   if (f.kind == MaterialKind::Mirror) return reflectPoint(p, f.plane());
+  if (f.thickness > 0.0) return p + (ref - light);  // a slab: everything moves with the light's shift
   return p + (ref - light) * (f.side(p) / f.side(light));
 }
 
@@ -47,13 +57,14 @@ namespace {
 
 // The face as a one-polygon object wound to face `towards` (a light volume is
 // the face's shadow volume from the virtual light).
-SceneObject faceFacing(const RefFace& f, const std::string& name, DVec3 towards) {
+// A slab's light leaves the face shifted with the light: `shift`.
+SceneObject faceFacing(const RefFace& f, const std::string& name, DVec3 towards, DVec3 shift = DVec3(0.0)) {
   SceneObject face;
   face.name = name;
   const bool reverse = f.side(towards) < 0.0;
   const std::size_t k = f.polygon.size();
   for (std::size_t i = 0; i < k; ++i) {
-    face.mesh.positions.push_back(f.polygon[reverse ? k - 1 - i : i]);
+    face.mesh.positions.push_back(Vec3(DVec3(f.polygon[reverse ? k - 1 - i : i]) + shift));
     face.mesh.normals.push_back(Vec3(reverse ? -f.normal : f.normal));
   }
   for (std::uint32_t i = 1; i + 1 < k; ++i) face.mesh.triangles.push_back({0, i, i + 1});
@@ -88,7 +99,8 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
       const SceneObject& specular = scene.objects[static_cast<std::size_t>(f.object)];
       const SceneMaterial& m = scene.materials[static_cast<std::size_t>(specular.material)];
       r.virtualLight.color = light.color * (f.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance);
-      r.lightVolume = objectShadowVolume(faceFacing(f, specular.name + " (light volume)", *ref),
+      const DVec3 shift = f.refracts() && f.thickness > 0.0 ? *ref - lightPos : DVec3(0.0);
+      r.lightVolume = objectShadowVolume(faceFacing(f, specular.name + " (light volume)", *ref, shift),
                                          r.virtualLight.position, bounds);
       // The light's side of the plane, and the side its light goes on to.
       const double lightSide = f.side(lightPos) > 0.0 ? 1.0 : -1.0;

@@ -38,6 +38,8 @@ struct ReflectedLight {
 // the light does not reach beyond the face through it (a mirror lit from
 // behind or in its plane, a light in a refracting face's plane or past its
 // critical angle). Index of refraction 1 gives the light itself, exactly.
+// A slab (a thickness) gives the light shifted sideways as its ray to the
+// face's centre is (scene/slab_refraction.hpp).
 std::optional<DVec3> refLightPosition(const RefFace& face, DVec3 light);
 
 // The map that carries a MUST_INTERSECT caster to the object whose shadow
@@ -47,6 +49,8 @@ std::optional<DVec3> refLightPosition(const RefFace& face, DVec3 light);
 // through the light become lines through the virtual light. For a mirror it
 // is the reflection itself (which is used, exactly); its determinant
 // dist(ref) / dist(light) is negative for a mirror (the winding turns).
+// For a slab (a thickness) it is the translation by ref - light: the light
+// and everything in its path move by the slab's shift.
 DVec3 transferThroughFace(const RefFace& face, DVec3 light, DVec3 ref, DVec3 p);
 
 // Every (light, ref face) pair with a virtual light, in light-then-face order.

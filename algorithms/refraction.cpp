@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "algorithms/quad_to_quad.hpp"
+#include "scene/slab_refraction.hpp"
 
 namespace mpr {
 namespace {
@@ -20,6 +21,36 @@ DMat4 cameraMatrix(const Camera& c, double aspect) {
 DMat4 turnAbout(DVec3 p, DVec3 axis, double angle) {
   const DMat4 toP = glm::translate(DMat4(1.0), p), fromP = glm::translate(DMat4(1.0), -p);
   return toP * glm::rotate(DMat4(1.0), -angle, axis) * fromP;
+}
+
+// In-out refraction through a slab (scene/slab_refraction.hpp): air on
+// both sides, so no critical angle; the view axis's ray where it meets the
+// plane (else the ray to the centre) is shifted sideways by the slab, and
+// the camera with it: the view through the face is the outer view moved by
+// that shift, not turned, and needs no image map (every ray of a slab leaves
+// parallel to itself; one shift, that of one incidence, for the whole face,
+// as the 1994 rule takes one angle).
+RefractedView slabView(const ViewCamera& outer, const Camera&, const RefFace& face, int faceIndex, double ior,
+                       DVec3 eye, DVec3 axis, DVec3 n) {
+  RefractedView r;
+  DVec3 d = glm::normalize(face.centre - eye);
+  if (glm::dot(axis, n) < 0.0) {
+    const double t = (face.offset - glm::dot(face.normal, eye)) / glm::dot(face.normal, axis);
+    if (t > 0.0 && std::isfinite(t)) d = axis;
+  }
+  const double cosI = std::min(1.0, -glm::dot(d, n));
+  r.incidence = std::acos(cosI);
+  r.refracted = std::asin(std::min(1.0, std::sin(r.incidence) / ior));
+  const DVec3 shift = slabShift(d, n, ior, face.thickness);
+  ViewCamera v = outer;
+  v.level = outer.level + 1;
+  v.throughFace = faceIndex;
+  v.clip = true;
+  v.clipPlane = DVec4(-n, glm::dot(n, face.centre));  // keep what lies beyond the face
+  // The camera moved by the shift: the world moved by minus it.
+  v.world = outer.world * glm::translate(DMat4(1.0), -shift);
+  r.view = v;
+  return r;
 }
 
 }  // namespace
@@ -41,6 +72,7 @@ std::optional<RefractedView> refractedView(const ViewCamera& outer, const Camera
   // The normal on the eye's side, and the ratio n_eye / n_other.
   const bool eyeInFront = face.side(eye) > 0.0;
   const DVec3 n = eyeInFront ? face.normal : -face.normal;
+  if (face.thickness > 0.0) return slabView(outer, camera, face, faceIndex, ior, eye, axis, n);
   const double eta = eyeInFront ? 1.0 / ior : ior;
 
   // The face centre decides against the critical angle. Only eta > 1 has

@@ -38,14 +38,37 @@ std::uint64_t shadowedViews(const RenderPlan& p) {
 }
 }  // namespace
 
+namespace {
+// Mirrors and glass receive shadows (bug 4): every face a shadowed view
+// recurses into has its own colour drawn with a shadow pass and a lit pass
+// per light; the faces a view at level L recurses into are the views at
+// level L + 1.
+std::uint64_t shadowedFaces(const RenderPlan& p) {
+  std::uint64_t faces = 0;
+  if (!p.shadows) return 0;
+  for (int l = 0; l <= std::min(p.shadowDepth, p.recursionDepth - 1); ++l)
+    faces = saturatingAdd(faces, p.predictedViewsAtLevel(l + 1));
+  return faces;
+}
+}  // namespace
+
 std::uint64_t RenderPlan::predictedShadowPasses() const {
-  // draw_all_shadows per light, and draw_ref_shadows per reflected light.
-  return saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(lights + reflectedLights));
+  // draw_all_shadows per light, draw_ref_shadows per reflected light, and
+  // the shadows on each face recursed into, per light.
+  return saturatingAdd(saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(lights + reflectedLights)),
+                       saturatingMul(shadowedFaces(*this), static_cast<std::uint64_t>(lights)));
 }
 
 std::uint64_t RenderPlan::predictedLightPasses() const {
-  return saturatingAdd(saturatingMul(predictedViews(), static_cast<std::uint64_t>(lights)),
-                       saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(reflectedLights)));
+  // A light drawn in darkness levels has S lit passes where shadows are
+  // drawn (one per level), one elsewhere.
+  const std::uint64_t extraLevels =
+      saturatingMul(static_cast<std::uint64_t>(darknessLights), static_cast<std::uint64_t>(darknessLevels - 1));
+  const std::uint64_t base =
+      saturatingAdd(saturatingAdd(saturatingMul(predictedViews(), static_cast<std::uint64_t>(lights)),
+                                  saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(reflectedLights))),
+                    saturatingMul(shadowedViews(*this), extraLevels));
+  return saturatingAdd(base, saturatingMul(shadowedFaces(*this), static_cast<std::uint64_t>(lights)));
 }
 
 std::uint64_t RenderPlan::predictedPasses() const {
@@ -89,7 +112,12 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
   if (p.shadows) p.reflectedLights = refLights;
   p.images = accumulatedImages(scene);
-  if (p.images == 1 && scene.render.softShadowSamples > 1)
+  if (p.shadows)
+    for (const PointLight& l : scene.lights)
+      if (const int k = darknessLevelSamples(scene, l); k > 1) ++p.darknessLights, p.darknessLevels = k;
+  bool areaLight = false;
+  for (const PointLight& l : scene.lights) areaLight = areaLight || l.radius > 0.0f;
+  if (!areaLight && scene.render.softShadowSamples > 1)
     p.notes.push_back("soft_shadow_samples without a light radius: hard shadows, one image");
   if (p.lights == 0) p.notes.push_back("no lights: the ambient pass only");
   else if (!scene.render.shadows) p.notes.push_back("shadows off: no shadow volumes");
@@ -112,6 +140,16 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
       << s.render.softShadowSamples << " light samples of the lights with a radius; each table cycled)\n";
   o << "  draw_window: ambient pass, then per light "
     << (p.shadows ? "shadow volumes (draw_all_shadows) and a lit pass" : "a lit pass (no shadows)") << "\n";
+  if (s.render.softShadowMethod == SoftShadowMethod::Pivot && p.shadows && p.images > 1 &&
+      s.render.softShadowSamples > 1)
+    o << "  pivot (1997 Fig. 7): the lights' shadow volumes built once from their centres; each image moves only "
+         "their far ends, by the light's jitter times a2/a1 about the silhouette nodes (no silhouette recomputed)\n";
+  if (p.darknessLights > 0)
+    o << "  darkness levels (1994's second soft-shadow method): " << p.darknessLights << " light"
+      << (p.darknessLights > 1 ? "s" : "") << " with a radius, the shadow volumes of their " << p.darknessLevels
+      << " samples counted in one pass, then " << p.darknessLevels
+      << " lit passes from the centre with the stencil stepped down between them, summed by glAccum "
+         "(LOAD, ACCUM 1/" << p.darknessLevels << ", RETURN); virtual lights stay hard\n";
   if (p.reflectedLights > 0)
     o << "  draw_ref_shadows: " << p.reflectedLights
       << " virtual lights (a light reflected by a mirror face or refracted through a glass face), each with its light volume and shadows\n";

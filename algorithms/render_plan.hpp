@@ -20,6 +20,11 @@ struct RenderPlan {
   int refractingFaces = 0;    // of which refract (the rest reflect)
   int shadowCasters = 0;      // objects with a shadow volume: casters and refracting faces
   int reflectedLights = 0;    // (light, ref face) pairs with a virtual light: draw_ref_shadows
+  // darkness_levels (1994's second soft-shadow method): the lights drawn in
+  // levels and how many each (soft_shadow_samples); their lit pass becomes
+  // `darknessLevels` lit passes in every view with shadows.
+  int darknessLights = 0;
+  int darknessLevels = 1;
   bool shadows = false;       // shadow volumes drawn (draw_all_shadows)
   bool reflections = false;   // draw_ref_objects runs
   int recursionDepth = 0;     // REF_LEVEL reaches this (0 without reflections)
@@ -35,7 +40,7 @@ struct RenderPlan {
   std::uint64_t predictedViews() const;
   std::uint64_t predictedViewsAtLevel(int level) const;  // 1994 eq. (5) for level >= 1
   std::uint64_t predictedShadowPasses() const;           // views up to shadowDepth x lights
-  std::uint64_t predictedLightPasses() const;            // views x lights
+  std::uint64_t predictedLightPasses() const;            // views x lights (+ the darkness levels)
   std::uint64_t predictedPasses() const;                 // the three above together (mpr render --max-passes)
   double paperEq7ShadowGenerations() const;               // 1997 eq. (7), per light
   double paperEq8Images() const;                          // 1997 eq. (8)

@@ -1,6 +1,9 @@
 #include "algorithms/scene_renderer.hpp"
 
+#include <optional>
+
 #include "algorithms/image_samples.hpp"
+#include "algorithms/shadow_pass.hpp"
 #include "scene/tessellation.hpp"
 
 namespace mpr {
@@ -45,12 +48,16 @@ RenderResult renderScene(const Scene& modelled, GLCommandStream& gl,
   // its view and light sample, summed with weight 1/n in the accumulation
   // buffer and returned to the colour buffer (Haeberli and Akeley 1990; the
   // 1994 paper's first soft-shadow method).
+  // The pivot method (1997 §4.4): the shadow volumes built once, from the
+  // lights' centres; each image pivots their far ends to its light sample.
+  std::optional<ShadowPass> pivotBase;
+  if (scene.render.softShadowMethod == SoftShadowMethod::Pivot) pivotBase.emplace(scene, r.plan, true);
   gl.pass("accumulate", "accumulate | clear the accumulation buffer");
   gl.clearAccum(0.0f, 0.0f, 0.0f, 0.0f);
   gl.clear(GL_ACCUM_BUFFER_BIT);
   for (int i = 0; i < n; ++i) {
     const Scene sampled = lightSampleScene(scene, i, n);
-    addCounts(r.counts, drawScene(sampled, r.plan, gl, report, viewSample(scene, i, n)));
+    addCounts(r.counts, drawScene(sampled, r.plan, gl, report, viewSample(scene, i, n), pivotBase ? &*pivotBase : nullptr));
     viewsBefore = r.counts.views;
     gl.pass("accumulate", "accumulate | image " + std::to_string(i + 1) + " of " + std::to_string(n) +
                               ": glAccum(GL_ACCUM, 1/" + std::to_string(n) + ")");

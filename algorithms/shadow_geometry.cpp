@@ -6,17 +6,22 @@
 
 namespace mpr {
 
-VolumeGeometry objectShadowVolume(const SceneObject& object, Vec3 light, const BoundingSphere& receivers) {
-  VolumeGeometry v;
-  v.object = object.name;
-  v.volume = buildShadowVolume(object.mesh, light, receivers);
-  v.closed = v.volume.casterClosed;
+void setVolumeTriangles(VolumeGeometry& v) {
+  v.sides.clear();
   for (const auto& q : v.volume.sides) {
     v.sides.push_back({q[0], q[1], q[2]});
     v.sides.push_back({q[0], q[2], q[3]});
   }
   v.caps = v.volume.lightCap;
   v.caps.insert(v.caps.end(), v.volume.darkCap.begin(), v.volume.darkCap.end());
+}
+
+VolumeGeometry objectShadowVolume(const SceneObject& object, Vec3 light, const BoundingSphere& receivers) {
+  VolumeGeometry v;
+  v.object = object.name;
+  v.volume = buildShadowVolume(object.mesh, light, receivers);
+  v.closed = v.volume.casterClosed;
+  setVolumeTriangles(v);
   return v;
 }
 

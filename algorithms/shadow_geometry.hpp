@@ -12,6 +12,10 @@
 
 namespace mpr {
 
+// The triangles the passes draw (sides as two triangles each, both caps),
+// from v.volume.
+void setVolumeTriangles(VolumeGeometry& v);
+
 // `object`'s volume from `light`, extruded until it leaves `receivers`.
 VolumeGeometry objectShadowVolume(const SceneObject& object, Vec3 light, const BoundingSphere& receivers);
 // The same for a two-sided object (glass): when no triangle faces the light

@@ -31,6 +31,7 @@ struct VolumeGeometry {
   // mirror image), so nothing hides the light cap as z-pass assumes.
   bool alwaysZFail = false;
   std::string object;
+  int objectIndex = -1;  // in scene.objects, for a face that must not count its own volume
 };
 
 // Counts `volumes` into the stencil as seen by `view`, only on pixels holding a
@@ -38,10 +39,12 @@ struct VolumeGeometry {
 // across a volume. `inverted` swaps increment and decrement (light volumes,
 // whose inside must end one below the outside); `alwaysZFail` counts every
 // volume behind the surface with its caps (light volumes: their near cap is a
-// mirror, which is not in the depth buffer). Returns the z-fail count.
+// mirror, which is not in the depth buffer). `volumeByVolume` draws each
+// volume's increments and decrements before the next volume's (for many
+// volumes at once: the darkness levels). Returns the z-fail count.
 std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& volumes,
                            const ViewCamera& view, const Camera& camera, double aspect, const StencilLevels& levels,
-                           bool inverted, bool alwaysZFail = false);
+                           bool inverted, bool alwaysZFail = false, bool volumeByVolume = false);
 
 // What an object does in draw_all_shadows (make_all_shadows(ALWAYS)): a
 // caster (casts_shadows, not specular); a refracting face, whose light goes
@@ -55,17 +58,27 @@ ShadowRole shadowRole(const SceneObject& object, const Scene& scene);
 class ShadowPass {
  public:
   ShadowPass(const Scene& scene, const RenderPlan& plan);
+  // The pivot method (1997 §4.4, Fig. 7; shadow_pivot.hpp). With
+  // `pivotBase` the volumes of lights with a radius are built to be pivoted
+  // (far nodes pushed out for jitters up to the radius): build this once,
+  // from the lights' centres. The second form takes an image's scene (its
+  // lights at their samples) and such a base: every volume is the base's
+  // with its far nodes pivoted by the light's jitter, nothing rebuilt.
+  ShadowPass(const Scene& scene, const RenderPlan& plan, bool pivotBase);
+  ShadowPass(const Scene& sampled, const ShadowPass& base);
 
   // Draws light `light`'s volumes as seen by `view` (GL state: the view is set
-  // up by the caller). Returns how many volumes needed z-fail.
+  // up by the caller), all but object `exclude`'s. Returns how many volumes
+  // needed z-fail.
   std::uint64_t drawVolumes(GLApi& gl, int light, const ViewCamera& view, const Camera& camera,
-                            const StencilLevels& levels);
+                            const StencilLevels& levels, int exclude = -1);
   const std::vector<std::string>& warnings() const { return warnings_; }
   const std::vector<VolumeGeometry>& volumes(int light) const { return volumes_[static_cast<std::size_t>(light)]; }
 
  private:
   const Scene& scene_;
   std::vector<std::vector<VolumeGeometry>> volumes_;  // per light
+  std::vector<Vec3> lightsAt_;                         // where each light's volumes were built from
   std::vector<std::string> warnings_;
 };
 

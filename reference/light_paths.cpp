@@ -6,6 +6,7 @@
 
 #include "reference/shading.hpp"
 #include "reference/snell.hpp"
+#include "scene/slab_refraction.hpp"
 
 namespace mpr {
 namespace {
@@ -62,7 +63,7 @@ struct ChainSearch {
 
 // The points of one light path from the shading point to the light.
 struct PathPoints {
-  std::array<DVec3, 2 * kMaxChainFaces + 2> p;
+  std::array<DVec3, 2 * kMaxChainFaces + 3> p;  // + 1: a slab's exit point
   int count = 0;
   void push(DVec3 v) { p[static_cast<std::size_t>(count++)] = v; }
 };
@@ -134,6 +135,20 @@ bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, d
   const DVec3 sImage = discPoint(reflectThrough(lp, chain, 0, j, 1, c), r, disc, face.centre);
   // A point on the face itself (its own lit colour) gets no light through it.
   if (!(std::fabs(face.side(pImage)) > kEpsilon) || !(std::fabs(face.side(sImage)) > kEpsilon)) return false;
+  if (face.thickness > 0.0) {
+    // A slab (in-out refraction): the light enters at x and goes on parallel
+    // to itself from x + shift (no spreading: every ray is shifted alike to
+    // first order; the spread stays 1).
+    const std::optional<DVec3> x = slabCrossing(face, sImage, pImage);
+    if (!x || !face.contains(*x)) return false;
+    const DVec3 exit = *x + slabShift(glm::normalize(*x - sImage), face.normal, face.ior, face.thickness);
+    PathPoints toPoint;
+    if (!unfold(lp, chain, j + 1, n, 1, exit, pImage, toPoint)) return false;
+    for (int i = toPoint.count - 2; i >= 0; --i) out.push(toPoint.p[static_cast<std::size_t>(i)]);
+    out.push(exit);
+    out.push(*x);
+    return unfold(lp, chain, j - 1, -1, -1, *x, sImage, out);
+  }
   const std::optional<DVec3> x = snellCrossing(face, sImage, pImage);
   if (!x || !face.contains(*x)) return false;
   PathPoints toPoint;

@@ -6,6 +6,7 @@
 
 #include "reference/shading.hpp"
 #include "reference/snell.hpp"
+#include "scene/slab_refraction.hpp"
 
 namespace mpr {
 namespace {
@@ -62,9 +63,9 @@ Traced trace(const TraceContext& c, const Ray& ray, double tMin, double tMax, in
   const bool deeper = c.bounces < 0 ? (depth < kMaxDepth && weight * t >= kMinWeight) : depth < c.bounces;
   if (!deeper || !(t > 0.0)) return {local * (1.0 - t), h.t};
   DVec3 through(0.0);
-  const auto follow = [&](DVec3 dir) {
+  const auto follow = [&](DVec3 dir, DVec3 from) {
     ++counts.specular;
-    return trace(c, Ray{p, dir}, kEpsilon, std::numeric_limits<double>::infinity(), depth + 1, weight * t, sampler,
+    return trace(c, Ray{from, dir}, kEpsilon, std::numeric_limits<double>::infinity(), depth + 1, weight * t, sampler,
                  sample, counts);
   };
   if (m.kind == MaterialKind::Mirror) {
@@ -78,13 +79,17 @@ Traced trace(const TraceContext& c, const Ray& ray, double tMin, double tMax, in
       const DVec3 u = perpendicular(n), v = glm::cross(n, u);
       dir = glm::normalize(dir + 2.0 * static_cast<double>(m.roughness) * glm::dot(dir, n) * (g.x * u + g.y * v));
     }
-    through = follow(dir).colour;
+    through = follow(dir, p).colour;
   } else {
     // The change of medium (1994): from the front, air into the material.
     const bool front = h.frontFacing;
     const double eta = front ? 1.0 / m.ior : m.ior;
     const DVec3 normal = front ? n : -n;
-    std::optional<DVec3> refracted = refractDirection(ray.direction, normal, eta);
+    // A slab (a thickness, in-out refraction): the ray goes on in its own
+    // direction from the face shifted sideways (scene/slab_refraction.hpp).
+    const bool slab = m.thickness > 0.0f;
+    std::optional<DVec3> refracted = slab ? std::optional<DVec3>(ray.direction) : refractDirection(ray.direction, normal, eta);
+    const DVec3 from = slab ? p + slabShift(ray.direction, normal, m.ior, m.thickness) : p;
     if (m.kind == MaterialKind::Frosted && refracted) {
       // Rough transmission, the model the pipeline's stochastic shear (1997
       // §3) draws: the refracted direction tilted by a Gaussian of standard
@@ -97,7 +102,7 @@ Traced trace(const TraceContext& c, const Ray& ray, double tMin, double tMax, in
       refracted = glm::normalize(*refracted + static_cast<double>(m.shear) * along * (g.x * u + g.y * v));
     }
     // Past the critical angle the face reflects it all (weight t still).
-    const Traced behind = follow(refracted ? *refracted : reflectAbout(ray.direction, normal));
+    const Traced behind = refracted ? follow(*refracted, from) : follow(reflectAbout(ray.direction, normal), p);
     through = behind.colour;
     if ((m.kind == MaterialKind::Translucent || m.kind == MaterialKind::Frosted) && refracted) {
       // The 1994 fog: toward the material's colour with the distance behind

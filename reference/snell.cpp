@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene/slab_refraction.hpp"
+
 namespace mpr {
 
 std::optional<DVec3> refractDirection(DVec3 d, DVec3 n, double eta) {
@@ -46,6 +48,27 @@ std::optional<DVec3> snellCrossing(const SpecularFace& face, DVec3 a, DVec3 b) {
     if (step < tolerance || hi - lo < tolerance) break;
   }
   return a0 + x * u;
+}
+
+std::optional<DVec3> slabCrossing(const SpecularFace& face, DVec3 a, DVec3 b) {
+  const double sa = face.side(a);
+  if (!((sa > 0.0 && face.side(b) < 0.0) || (sa < 0.0 && face.side(b) > 0.0))) return std::nullopt;
+  const auto crossing = [&](DVec3 target) -> std::optional<DVec3> {
+    const double st = face.side(target);
+    if (!((sa > 0.0 && st < 0.0) || (sa < 0.0 && st > 0.0))) return std::nullopt;
+    return a + (target - a) * (sa / (sa - st));
+  };
+  std::optional<DVec3> x = crossing(b);
+  const double tolerance = 1e-13 * std::max(1.0, glm::length(b - a));
+  for (int i = 0; i < 100 && x; ++i) {
+    const DVec3 shift = slabShift(glm::normalize(*x - a), face.normal, face.ior, face.thickness);
+    const std::optional<DVec3> next = crossing(b - shift);
+    if (!next) return std::nullopt;
+    const double step = glm::length(*next - *x);
+    x = next;
+    if (step < tolerance) return x;
+  }
+  return std::nullopt;
 }
 
 }  // namespace mpr

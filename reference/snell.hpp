@@ -21,4 +21,13 @@ std::optional<DVec3> refractDirection(DVec3 d, DVec3 n, double eta);
 // are on the same side. X is not checked against the polygon.
 std::optional<DVec3> snellCrossing(const SpecularFace& face, DVec3 a, DVec3 b);
 
+// The same for a slab (face.thickness > 0, scene/slab_refraction.hpp): the
+// point X on the plane where light from a enters so that, shifted sideways
+// by the slab and going on parallel to a -> X, it reaches b. Fixed-point
+// iteration from the straight line's crossing: X = the plane's crossing of
+// a -> b - shift(X - a), to 1e-13 of the distance (the shift changes slowly
+// with the angle: a contraction for slabs thin against the distances);
+// nothing when a and b are on one side or it does not settle in 100 steps.
+std::optional<DVec3> slabCrossing(const SpecularFace& face, DVec3 a, DVec3 b);
+
 }  // namespace mpr

@@ -21,6 +21,7 @@ struct SpecularFace {
   double radius = 0.0;         // of the sphere about `centre` holding the polygon
   double weight = 1.0;         // reflectance (mirror) or transmittance
   double ior = 1.0;
+  double thickness = 0.0;      // > 0: a slab, rays shifted, not turned (scene/slab_refraction.hpp)
   int dropAxis = 2;            // the normal's largest axis, dropped for 2-D tests
 
   bool mirror() const { return kind == MaterialKind::Mirror; }

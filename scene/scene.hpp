@@ -50,6 +50,7 @@ struct SceneMaterial {
   float ior = 1.5f;             // refractive, translucent, frosted
   float transmittance = 0.9f;   // refractive, translucent, frosted
   float fogDistance = 1.0f;     // translucent: distance of full fog
+  float thickness = 0.0f;       // refracting: a slab of this thickness (in-out refraction, 1997 §2); 0: 1994's change of medium
   float shear = 0.05f;          // frosted: stochastic shear amount
   int samples = 8;              // frosted: images accumulated
   bool specularKind() const { return kind != MaterialKind::Diffuse; }
@@ -79,11 +80,21 @@ struct SceneObject {
 // MPR's default is the 4x4 with Z kept, GL-expressible and depth-ordered.
 enum class RefractionMap { ProjectionKeptZ, ProjectionZeroedZ, EndOfPipeline };
 
+// How a light with a radius casts soft shadows (render.soft_shadow_method):
+// Images, 1994's first method (one whole shadowed render per light sample,
+// accumulated); DarknessLevels, its second (every sample's shadow volume
+// counted in one stencil, the light added once per darkness level with the
+// stencil stepped down between levels, the levels accumulated); Pivot,
+// 1997 §4.4 (images, but the shadow volumes built once from the light's
+// centre and only their far ends moved per sample, Fig. 7).
+enum class SoftShadowMethod { Images, DarknessLevels, Pivot };
+
 struct RenderSettings {
   int width = 640, height = 480;
   int recursionDepth = 2;        // mirror/refraction levels
   int shadowRecursionDepth = 1;
   int softShadowSamples = 1;   // light samples accumulated (1994's first method: shadowed images)
+  SoftShadowMethod softShadowMethod = SoftShadowMethod::Images;
   int antialiasSamples = 1;    // jittered images accumulated (and lens samples with an aperture)
   bool shadows = true, reflections = true, refractions = true, translucency = true, frosted = true;
   std::string profile = "indigo";

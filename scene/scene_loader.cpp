@@ -19,6 +19,7 @@
 #include "util/transforms.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/primitives.hpp"
+#include "scene/ward_fit.hpp"
 
 namespace mpr {
 namespace {
@@ -61,6 +62,9 @@ const std::vector<KeySpec> kMaterialKeys = {
     {"ior", "number > 0", "refractive, translucent, frosted: index of refraction, default 1.5"},
     {"transmittance", "number in [0, 1]", "refractive, translucent, frosted: fraction transmitted, default 0.9"},
     {"fog_distance", "number > 0", "translucent and frosted: distance behind the face of full fog, default 1"},
+    {"thickness", "number >= 0",
+     "refractive, translucent, frosted: a slab of this thickness, its view and light shifted, not turned (in-out "
+     "refraction, 1997 §2); default 0, one change of medium (1994)"},
     {"shear", "number >= 0", "frosted: the stochastic shear's multiplier m (1997 section 3), default 0.05"},
     {"samples", "integer >= 1", "frosted and glossy mirrors: sheared images accumulated, default 8"},
 };
@@ -83,8 +87,10 @@ const std::vector<KeySpec> kRenderKeys = {
     {"soft_shadow_samples", "integer >= 1",
      "light samples of every light with a radius, one shadowed image each, accumulated; default 1"},
     {"antialias_samples", "integer >= 1", "jittered (and, with camera.aperture, lens) images accumulated, default 1"},
-    {"soft_shadow_method", "images",
-     "how soft shadows are made: images (1994's first method); darkness_levels and pivot are not built"},
+    {"soft_shadow_method", "images | darkness_levels | pivot",
+     "how soft shadows are made: images (1994's first method, default), darkness_levels (its second: every "
+     "sample's shadow volume counted at once, the light added per darkness level) or pivot (1997 Fig. 7: images "
+     "whose shadow volumes are built once and only their far ends moved per sample)"},
     {"shadows", "bool", "default true"}, {"reflections", "bool", "default true"},
     {"refractions", "bool", "default true"}, {"translucency", "bool", "default true"},
     {"frosted", "bool", "default true"}, {"profile", "indigo | mesa", "hardware profile, default indigo"},
@@ -267,9 +273,10 @@ class Loader {
     if (n["antialias_samples"]) r.antialiasSamples = integer(n["antialias_samples"], "render.antialias_samples", 1, 1024);
     if (n["soft_shadow_method"]) {
       const std::string m = string(n["soft_shadow_method"], "render.soft_shadow_method");
-      if (m == "darkness_levels" || m == "pivot")
-        fail(n["soft_shadow_method"], "render.soft_shadow_method " + m + " is not built yet (built: images)");
-      if (m != "images") fail(n["soft_shadow_method"], "unknown soft_shadow_method '" + m + "' (known: images)");
+      if (m == "darkness_levels") r.softShadowMethod = SoftShadowMethod::DarknessLevels;
+      else if (m == "pivot") r.softShadowMethod = SoftShadowMethod::Pivot;
+      else if (m != "images")
+        fail(n["soft_shadow_method"], "unknown soft_shadow_method '" + m + "' (known: images, darkness_levels, pivot)");
     }
     if (n["shadows"]) r.shadows = boolean(n["shadows"], "render.shadows");
     if (n["reflections"]) r.reflections = boolean(n["reflections"], "render.reflections");
@@ -350,14 +357,14 @@ class Loader {
       // 1997 paper eq. (6): the Chi-square fit of Ward's isotropic Gaussian by
       // Phong: exponent 1.999 / alpha^2, scale 0.0398 * exponent.
       const double alpha = number(n["roughness"], where + " roughness");
-      const double exponent = alpha > 0.0 ? 1.999 / (alpha * alpha) : 1e30;
+      const double exponent = alpha > 0.0 ? kWardFitExponent / (alpha * alpha) : 1e30;
       if (!(exponent <= 128.0))
         fail(n["roughness"], where + " roughness must be at least 0.125: eq. (6) gives a Phong exponent of 1.999/alpha^2, "
                                  "and GL's largest is 128");
       m.shininess = static_cast<float>(exponent);
       m.roughness = static_cast<float>(alpha);
       m.wardSpecular = m.specular;
-      m.specular *= static_cast<float>(0.0398 * exponent);
+      m.specular *= static_cast<float>(kWardFitScale * exponent);
     }
     if (n["reflectance"]) m.reflectance = static_cast<float>(number(n["reflectance"], where + " reflectance", 0.0, 1.0));
     if (n["ior"]) {
@@ -367,6 +374,14 @@ class Loader {
     }
     if (n["transmittance"]) m.transmittance = static_cast<float>(number(n["transmittance"], where + " transmittance", 0.0, 1.0));
     if (n["fog_distance"]) m.fogDistance = static_cast<float>(number(n["fog_distance"], where + " fog_distance", 0.0, 1e30, true));
+    if (n["thickness"]) {
+      m.thickness = static_cast<float>(number(n["thickness"], where + " thickness", 0.0, 1e6));
+      const bool refracting =
+          m.kind == MaterialKind::Refractive || m.kind == MaterialKind::Translucent || m.kind == MaterialKind::Frosted;
+      if (!refracting && m.thickness > 0.0f)
+        fail(n["thickness"], where + " thickness is for refracting materials (kind refractive, translucent or frosted): "
+                                     "a slab shifts the view through it; this one is not looked through");
+    }
     if (n["shear"]) m.shear = static_cast<float>(number(n["shear"], where + " shear", 0.0, 1e30));
     if (n["samples"]) m.samples = integer(n["samples"], where + " samples", 1, 1024);
     return m;
@@ -684,6 +699,41 @@ class Loader {
                    std::to_string(p.stencilBits) + "-bit stencil of profile '" + p.name + "' holds: recursion levels lie below SHAD_MIN = " +
                    std::to_string(shadMin) + ", so the deepest is " + std::to_string(maxDepth));
     }
+    if (s.render.softShadowMethod == SoftShadowMethod::DarknessLevels) checkDarknessLevels(doc, s, p);
+  }
+
+  // darkness_levels (1994's second soft-shadow method) sums its levels in the
+  // accumulation buffer (glAccum LOAD, ACCUM 1/S, RETURN inside each view),
+  // so it cannot also sum whole images there (antialiasing, depth of field,
+  // frosted glass, glossy mirrors): one accumulation buffer. And every
+  // sample's volume is counted above SHAD_ZERO at once: a point in all S
+  // volumes of one caster holds SHAD_ZERO + S, at most the stencil's maximum.
+  void checkDarknessLevels(const YAML::Node& doc, const Scene& s, const HardwareProfile& p) const {
+    const YAML::Node at = doc["render"]["soft_shadow_method"] ? doc["render"]["soft_shadow_method"] : doc;
+    const int samples = s.render.softShadowSamples;
+    bool areaLight = false;
+    for (const PointLight& l : s.lights) areaLight = areaLight || l.radius > 0.0f;
+    if (!areaLight || samples <= 1) return;  // hard shadows: no levels
+    const int above = static_cast<int>(p.stencilMax() - (p.stencilMax() + 1) / 4 * 3);
+    if (samples > above)
+      fail(at, "render.soft_shadow_method darkness_levels counts all " + std::to_string(samples) +
+                   " light samples' shadow volumes in one stencil: the " + std::to_string(p.stencilBits) +
+                   "-bit stencil of profile '" + p.name + "' counts at most " + std::to_string(above) +
+                   " above SHAD_ZERO (use soft_shadow_samples <= " + std::to_string(above) + " or the images method)");
+    std::string other;
+    if (s.render.antialiasSamples > 1) other = "render.antialias_samples " + std::to_string(s.render.antialiasSamples);
+    if (s.render.frosted)
+      for (const SceneObject& o : s.objects) {
+        const SceneMaterial& m = s.materials[static_cast<std::size_t>(o.material)];
+        if ((m.kind == MaterialKind::Frosted || (m.kind == MaterialKind::Mirror && m.roughness > 0.0f)) && m.samples > 1 &&
+            other.empty())
+          other = "the " + std::string(m.kind == MaterialKind::Frosted ? "frosted" : "glossy") + " object '" + o.name +
+                  "' (" + std::to_string(m.samples) + " samples)";
+      }
+    if (!other.empty())
+      fail(at, "render.soft_shadow_method darkness_levels sums its levels in the accumulation buffer, which " + other +
+                   " needs for its images: one accumulation buffer holds one sum (use the images method, or "
+                   "render.frosted: false / antialias_samples: 1)");
   }
 
  private:

@@ -103,14 +103,14 @@ std::string sceneFingerprint(const Scene& s) {
   for (const SceneMaterial& m : s.materials)
     o << "M" << static_cast<int>(m.kind) << vec(m.diffuse) << vec(m.specular) << vec(m.emission) << m.shininess << ' '
       << m.reflectance << ' ' << m.ior << ' ' << m.transmittance << ' ' << m.fogDistance << ' ' << m.shear << ' '
-      << m.samples << ' ' << m.roughness;
+      << m.samples << ' ' << m.roughness << ' ' << m.thickness;
   for (const SceneObject& ob : s.objects) {
     o << "O" << ob.material << ob.castsShadows << ' ' << ob.mesh.positions.size() << ' ' << ob.mesh.triangles.size();
     if (!ob.mesh.positions.empty()) o << vec(ob.mesh.positions.front()) << vec(ob.mesh.positions.back());
   }
   for (const char* k : {"render.width", "render.height", "render.recursion_depth",
                                "render.shadow_recursion_depth", "render.soft_shadow_samples",
-                               "render.antialias_samples", "render.shadows", "render.reflections",
+                               "render.soft_shadow_method", "render.antialias_samples", "render.shadows", "render.reflections",
                                "render.refractions", "render.translucency", "render.frosted", "render.profile",
                                "render.refraction_map", "render.tessellation"})
     o << "R" << *sceneValue(s, k);
@@ -127,6 +127,10 @@ std::optional<std::string> sceneValue(const Scene& s, const std::string& key) {
   if (key == "render.recursion_depth") return std::to_string(r.recursionDepth);
   if (key == "render.shadow_recursion_depth") return std::to_string(r.shadowRecursionDepth);
   if (key == "render.soft_shadow_samples") return std::to_string(r.softShadowSamples);
+  if (key == "render.soft_shadow_method")
+    return std::string(r.softShadowMethod == SoftShadowMethod::Images           ? "images"
+                       : r.softShadowMethod == SoftShadowMethod::DarknessLevels ? "darkness_levels"
+                                                                                : "pivot");
   if (key == "render.antialias_samples") return std::to_string(r.antialiasSamples);
   if (key == "render.shadows") return b(r.shadows);
   if (key == "render.reflections") return b(r.reflections);

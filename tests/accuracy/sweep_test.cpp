@@ -59,6 +59,12 @@ TEST(Sweep, TheScenesOwnValueIsTheSameScene) {
   EXPECT_EQ(*sceneValue(base, "render.refraction_map"), "projection");
   EXPECT_EQ(*sceneValue(base, "render.shadows"), "true");
   EXPECT_EQ(*sceneValue(moved, "camera.fov"), "50");
+  // The soft-shadow method is a setting of its own (a sweep over it is not
+  // folded into the scene's row).
+  const Scene levels = loadSceneText(defaultSceneText(), "<default>", {"render.soft_shadow_method=darkness_levels"});
+  EXPECT_NE(sceneFingerprint(base), sceneFingerprint(levels));
+  EXPECT_EQ(*sceneValue(base, "render.soft_shadow_method"), "images");
+  EXPECT_EQ(*sceneValue(levels, "render.soft_shadow_method"), "darkness_levels");
   EXPECT_FALSE(sceneValue(base, "ambient").has_value());
 }
 

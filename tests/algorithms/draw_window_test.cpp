@@ -156,6 +156,12 @@ TEST(DrawWindowCanonical, StencilAfterEveryStep) {
       {"render area to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)", mirrorHolding(2)},
       {"level done | apply_stencil(EQUAL, REF_LEVEL, REPLACE, ZERO)", kMirrorMask},
       {"blend the face's own colour | two renderings through destination alpha", kMirrorMask},
+      // The mirror receives shadows (bug 4): its pixels count the light's
+      // volumes (the box's does not reach it: nothing above SHAD_ZERO).
+      {"face lit by light 0: its pixels to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)", mirrorHolding(192)},
+      {"shadows on the face, light 0 | the light's volumes but the face's own, on its pixels", mirrorHolding(192)},
+      {"the face lit by light 0 outside the shadows | blend (DST_ALPHA, ONE)", mirrorHolding(192)},
+      {"face back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)", kMirrorMask},
       {"face back to REF_LEVEL | apply_stencil(EQUAL, ZERO, REPLACE, REF_LEVEL)", level1},
       {"level done | apply_stencil(EQUAL, REF_LEVEL, REPLACE, ZERO)", zero},
   };

@@ -72,8 +72,11 @@ TEST(RenderPlan, PaperEquationFiveByHand) {
   p.lights = 2;
   p.shadows = true;
   p.shadowDepth = 1;
-  EXPECT_EQ(p.predictedShadowPasses(), (1u + 3u) * 2u);
-  EXPECT_EQ(p.predictedLightPasses(), 22u * 2u);
+  // Shadowed views (levels 0 and 1) draw their faces' own colours with a
+  // shadow and a lit pass per light (bug 4): the faces of level 0 and 1
+  // views are the views of levels 1 and 2, 3 + 6.
+  EXPECT_EQ(p.predictedShadowPasses(), (1u + 3u) * 2u + (3u + 6u) * 2u);
+  EXPECT_EQ(p.predictedLightPasses(), 22u * 2u + (3u + 6u) * 2u);
   EXPECT_DOUBLE_EQ(p.paperEq7ShadowGenerations(), 3.0 * (9 + 9) / 2.0 + 1.0);
   EXPECT_DOUBLE_EQ(p.paperEq8Images(), 28.0);
 }

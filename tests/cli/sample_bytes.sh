@@ -11,7 +11,7 @@ render() {  # NAME [render arguments...]
       --trace "$WORK/$name.gls" 2>/dev/null || fail "$name: render failed"
 }
 render default
-render default_eop --set render.refraction_map=end_of_pipeline
+render default_eop --set materials.glass.thickness=0 --set render.refraction_map=end_of_pipeline
 for scene in "$SRC"/scenes/*.yaml; do
   name="$(basename "$scene" .yaml)"
   [[ "$name" == default ]] || render "$name" "$scene"

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "reference/sampler.hpp"
+#include "scene/slab_refraction.hpp"
 
 namespace mpr {
 namespace {
@@ -33,6 +34,29 @@ TEST(Snell, CrossingObeysSnellsLaw) {
   ASSERT_TRUE(back.has_value());
   EXPECT_NEAR(back->x, x->x, 1e-12);
   EXPECT_FALSE(snellCrossing(f, a, DVec3(1, 0, 1)).has_value());  // same side
+}
+
+// A slab (thickness 0.2): the crossing X where light from a, shifted
+// sideways by the slab and going on parallel to a -> X, passes through b:
+// b - shift(X - a) lies on the line a -> X. Seen from either side alike.
+TEST(Snell, SlabCrossingGoesOnParallel) {
+  SpecularFace f = glassInZ0();
+  f.thickness = 0.2;
+  const DVec3 a(0, 0, 2), b(3, 0.5, -1);
+  const auto x = slabCrossing(f, a, b);
+  ASSERT_TRUE(x.has_value());
+  EXPECT_NEAR(x->z, 0.0, 1e-15);
+  const DVec3 d = glm::normalize(*x - a);
+  const DVec3 shifted = b - slabShift(d, f.normal, 1.5, 0.2);
+  EXPECT_NEAR(glm::length(glm::cross(glm::normalize(shifted - a), d)), 0.0, 1e-12);
+  // The slab shifts the light back toward the normal, so it enters beyond
+  // the straight line's crossing (2, 1/3, 0).
+  EXPECT_GT(x->x, 2.0);
+  const auto back = slabCrossing(f, b, a);  // from the other side, the same rule
+  ASSERT_TRUE(back.has_value());
+  const DVec3 e = glm::normalize(*back - b);
+  EXPECT_NEAR(glm::length(glm::cross(glm::normalize(a - slabShift(e, f.normal, 1.5, 0.2) - b), e)), 0.0, 1e-12);
+  EXPECT_FALSE(slabCrossing(f, a, DVec3(1, 0, 1)).has_value());  // same side
 }
 
 TEST(Snell, DirectionAndTheCriticalAngle) {

@@ -104,6 +104,23 @@ TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
             "s.yaml:2:18: material 'm' roughness must be at least 0.125: eq. (6) gives a Phong exponent of "
             "1.999/alpha^2, and GL's largest is 128");
   EXPECT_EQ(errorOf("camera: [1, 2\n"), "s.yaml:2:1: YAML syntax: end of sequence flow not found");
+  EXPECT_EQ(errorOf("materials:\n  m: {kind: mirror, thickness: 0.1}\n"),
+            "s.yaml:2:32: material 'm' thickness is for refracting materials (kind refractive, translucent or "
+            "frosted): a slab shifts the view through it; this one is not looked through");
+  // darkness_levels: the levels in the accumulation buffer, every sample counted above SHAD_ZERO.
+  const std::string soft = "lights: [{position: [0, 4, 0], radius: 1}]\nrender: {soft_shadow_method: darkness_levels, ";
+  EXPECT_EQ(errorOf(soft + "soft_shadow_samples: 64}\n"),
+            "s.yaml:2:30: render.soft_shadow_method darkness_levels counts all 64 light samples' shadow volumes in one "
+            "stencil: the 8-bit stencil of profile 'indigo' counts at most 63 above SHAD_ZERO (use "
+            "soft_shadow_samples <= 63 or the images method)");
+  EXPECT_EQ(errorOf(soft + "soft_shadow_samples: 4, antialias_samples: 4}\n"),
+            "s.yaml:2:30: render.soft_shadow_method darkness_levels sums its levels in the accumulation buffer, which "
+            "render.antialias_samples 4 needs for its images: one accumulation buffer holds one sum (use the images "
+            "method, or render.frosted: false / antialias_samples: 1)");
+  EXPECT_EQ(errorOf("render: {soft_shadow_method: penumbra}\n"),
+            "s.yaml:1:30: unknown soft_shadow_method 'penumbra' (known: images, darkness_levels, pivot)");
+  // Without a light radius the levels are one: nothing to refuse.
+  EXPECT_NO_THROW(loadSceneText("render: {soft_shadow_method: darkness_levels, soft_shadow_samples: 64, antialias_samples: 4}\n", "s.yaml"));
 }
 
 class MeshFiles : public ::testing::Test {
