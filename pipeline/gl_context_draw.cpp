@@ -37,6 +37,9 @@ void GLContext::begin(GLenumValue mode) {
   }
   // Only another GL_QUADS block can join the open quad draw.
   if (primitive_ != PrimitiveType::Quads) closeQuadDraw();
+  // vbo_exec_Begin: attributes set since the last flush but no vertex (all
+  // outside glBegin/glEnd) are not kept in the format.
+  if (vboSize_[kVboPosition] == 0) vboSize_.fill(0);
   inBegin_ = true;
   vboStored_ = true;
   blockWraps_.clear();
@@ -109,10 +112,10 @@ void GLContext::rectf(float x1, float y1, float x2, float y2) {
   // that order. The four vertices share one colour, so the provoking vertex
   // does not matter.
   begin(GL_QUADS);
-  vertex4f(x1, y1, 0, 1);
-  vertex4f(x2, y1, 0, 1);
-  vertex4f(x2, y2, 0, 1);
-  vertex4f(x1, y2, 0, 1);
+  vertex4f(x1, y1, 0, 1, 2);  // glVertex2f, as _mesa_Rectf calls it
+  vertex4f(x2, y1, 0, 1, 2);
+  vertex4f(x2, y2, 0, 1, 2);
+  vertex4f(x1, y2, 0, 1, 2);
   end();
 }
 
@@ -251,10 +254,12 @@ void GLContext::drawQuadStripPiece(const std::vector<ClipVertex>& processed) {
 }
 
 void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
-  // Flat shaded, a quad keeps its last vertex provoking in both triangles:
-  // llvmpipe gets (0, 1, 3) and (1, 2, 3) whether or not the draw clips
-  // (measured against GL_TRIANGLES in each order: flat_quad_depth_order.gls).
-  if (flatShading_) {
+  // Flat shaded with a colour that varies by vertex (lit, or a colour in the
+  // vbo's vertex format), a quad keeps its last vertex provoking in both
+  // triangles: llvmpipe gets (0, 1, 3) and (1, 2, 3) whether or not the draw
+  // clips; with one colour for all it is drawn as smooth quads are (measured
+  // against GL_TRIANGLES in each order: flat_quad_depth_order.gls).
+  if (flatShading_ && (lightingEnabled_ || vboSize_[kVboColor] != 0)) {
     closeQuadDraw();
     return drawProcessed(PrimitiveType::Quads, processed, true);
   }
