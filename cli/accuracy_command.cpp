@@ -10,6 +10,7 @@
 
 #include "cli/page_folder.hpp"
 #include "cli/scene_arguments.hpp"
+#include "cli/scene_limits.hpp"
 #include "reference/accuracy/accuracy_plot.hpp"
 #include "reference/accuracy/accuracy_report.hpp"
 #include "reference/accuracy/pipeline_measurement.hpp"
@@ -30,6 +31,7 @@ struct AccuracyOptions {
   int repeat = 3, width = 0, height = 0, spp = 16, bounces = -1, threads = 0;
   std::string model = "pipeline";
   double budget = 600.0;
+  SceneLimits limits;
 };
 
 struct UserError : std::runtime_error {
@@ -87,7 +89,7 @@ class AccuracyRun {
   // Loads the scene with the base sets and `more`; `what` names the option in errors.
   Scene load(const std::vector<std::string>& more, const std::string& what) const {
     try {
-      return loadCommandScene(o_.scene, o_.sets, o_.width, o_.height, more);
+      return loadCommandScene(o_.scene, o_.sets, o_.width, o_.height, more, o_.limits.confine);
     } catch (const SceneError& e) {
       std::string m = e.what();
       // A bad --vary value is reported by the loader as its --set
@@ -152,7 +154,7 @@ class AccuracyRun {
   // pixels what the reference costs; the planner's pass counts (culling off,
   // so an upper bound) give each setting's estimate.
   void checkBudget(bool withReference) {
-    const PipelineMeasurement calib = measurePipeline(singlePassScene_, 1);
+    const PipelineMeasurement calib = measureWithinLimits(singlePassScene_, 1);
     const double perPass = calib.seconds / std::max(1.0, predictedPasses(singlePassScene_));
     double total = calib.seconds * o_.repeat, worst = -1.0;
     std::size_t worstRow = 0;
@@ -199,8 +201,17 @@ class AccuracyRun {
     return quantiseReference(im);
   }
 
+  // A setting whose render passes --max-passes stops the sweep, nothing written.
+  PipelineMeasurement measureWithinLimits(const Scene& scene, int repeat) const {
+    try {
+      return measurePipeline(scene, repeat, passLimitWatch(o_.limits));
+    } catch (const PassLimitReached& stop) {
+      throw UserError("mpr accuracy: " + passLimitMessage(scene, stop, o_.limits));
+    }
+  }
+
   void measure(AccuracyRow& row, const Scene& scene, const Rgb8Image& reference, const std::string& name) {
-    const PipelineMeasurement m = measurePipeline(scene, o_.repeat);
+    const PipelineMeasurement m = measureWithinLimits(scene, o_.repeat);
     row.seconds = m.seconds;
     row.views = m.views;
     row.lightPasses = m.lightPasses;
@@ -285,6 +296,7 @@ void addAccuracyCommand(CLI::App& app, int& exitCode) {
   c->add_option("--budget", o->budget, "refuse a sweep estimated to take longer, in seconds (default 600)");
   c->add_option("--report", o->report, "folder to write the report to")->required();
   c->add_flag("-q,--quiet", o->quiet, "no progress or summary on standard error");
+  addSceneLimitOptions(*c, o->limits);
   c->callback([o, &exitCode] {
     try {
       exitCode = AccuracyRun(*o).run();

@@ -11,6 +11,7 @@
 
 #include "cli/output_set.hpp"
 #include "cli/scene_arguments.hpp"
+#include "cli/scene_limits.hpp"
 #include "reference/reference_image.hpp"
 #include "reference/reference_renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -26,12 +27,13 @@ struct ReferenceCommandOptions {
   int spp = 16, bounces = -1, threads = 0;
   std::string model = "pipeline";
   std::vector<std::string> sets;
+  SceneLimits limits;  // --confine only: the tracer makes no passes (--spp and --bounces bound it)
 };
 
 int runReference(const ReferenceCommandOptions& o) {
   Scene scene;
   try {
-    scene = loadCommandScene(o.scene, o.sets, o.width, o.height);
+    scene = loadCommandScene(o.scene, o.sets, o.width, o.height, {}, o.limits.confine);
   } catch (const SceneError& e) {
     std::cerr << e.what() << "\n";
     return 2;
@@ -97,6 +99,7 @@ void addReferenceCommand(CLI::App& app, int& exitCode) {
   c->add_option("--width", o->width, "image width (overrides render.width)")->check(CLI::Range(1, 16384));
   c->add_option("--height", o->height, "image height (overrides render.height)")->check(CLI::Range(1, 16384));
   c->add_option("--set", o->sets, "override a scene value: key.path=value (repeatable)");
+  addConfineOption(*c, o->limits);
   c->callback([o, &exitCode] { exitCode = runReference(*o); });
 }
 

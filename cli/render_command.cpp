@@ -15,6 +15,7 @@
 #include "algorithms/scene_renderer.hpp"
 #include "cli/output_set.hpp"
 #include "cli/scene_arguments.hpp"
+#include "cli/scene_limits.hpp"
 #include "cli/scene_test.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
@@ -49,13 +50,7 @@ struct RenderOptions {
   bool dumpGiven = false, traceGiven = false, statsGiven = false;  // --dump '' is an error, not "none"
   bool describe = false;
   bool noCull = false;
-  bool confine = false;
-  std::uint64_t maxPasses = 1000000;
-};
-
-// Thrown from the progress callback when a culled render passes --max-passes.
-struct PassLimitReached {
-  std::uint64_t views;
+  SceneLimits limits;
 };
 
 std::string statsJson(const GLCommandStream& s, const Scene& scene, const RenderResult& r, double seconds) {
@@ -93,7 +88,7 @@ int runRender(const RenderOptions& o) {
   }
   Scene scene;
   try {
-    scene = loadCommandScene(o.scene, o.sets, o.width, o.height, {}, o.confine);
+    scene = loadCommandScene(o.scene, o.sets, o.width, o.height, {}, o.limits.confine);
   } catch (const SceneError& e) {
     std::cerr << e.what() << "\n";
     return 2;
@@ -116,10 +111,8 @@ int runRender(const RenderOptions& o) {
   // a plan past --max-passes is refused before it starts without culling, and
   // a culled render is stopped when its views alone pass the limit.
   const RenderPlan plan = planRender(scene, !o.noCull);
-  if (o.noCull && plan.predictedPasses() > o.maxPasses) {
-    std::cerr << scene.file << ": the render would take " << countText(plan.predictedPasses())
-              << " passes (views, lit and shadow passes; mpr info --no-cull lists them), more than --max-passes "
-              << o.maxPasses << "\n";
+  if (const std::string problem = planLimitProblem(scene, plan, !o.noCull, o.limits); !problem.empty()) {
+    std::cerr << problem << "\n";
     return 2;
   }
   std::unique_ptr<GLContext> gl;
@@ -136,14 +129,12 @@ int runRender(const RenderOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   RenderResult result;
   try {
-    result = renderScene(scene, stream, [&](const RenderProgress& p) {
-      if (p.views > o.maxPasses) throw PassLimitReached{p.views};
+    result = renderScene(scene, stream, passLimitWatch(o.limits, [&](const RenderProgress& p) {
       if (tty) std::cerr << "\rrender: view " << p.views << " of at most " << countText(p.predictedViews) << "   " << std::flush;
-    }, !o.noCull);
+    }), !o.noCull);
   } catch (const PassLimitReached& stop) {
     if (tty) std::cerr << "\r" << std::string(60, ' ') << "\r";
-    std::cerr << scene.file << ": the render passed --max-passes " << o.maxPasses << " at view " << stop.views
-              << " (the plan allows up to " << countText(plan.predictedPasses()) << " passes); nothing was written\n";
+    std::cerr << passLimitMessage(scene, stop, o.limits) << "; nothing was written\n";
     return 2;
   }
   watcher.finish();
@@ -201,12 +192,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   auto trace = c->add_option("--trace", o->traceFile, "write the GL calls executed as a GL script (.gls)");
   auto stats =
       c->add_option("--stats", o->statsFile, "write statistics as JSON: passes by kind, calls, triangles, fragments, time");
-  c->add_option("--max-passes", o->maxPasses,
-                 "refuse a render of more passes (views, lit and shadow passes; default 1000000)")
-      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
-  c->add_flag("--confine", o->confine,
-              "refuse mesh files outside the scene's folder (absolute paths, '..', links out), for scenes "
-              "someone else wrote");
+  addSceneLimitOptions(*c, o->limits);
   c->add_flag("--no-cull", o->noCull, "recurse into every mirror face, even those seen from behind or hidden");
   c->add_flag("--describe-format", o->describe, "print a JSON Schema-like description of the scene format");
   c->callback([o, dump, trace, stats, &exitCode] {

@@ -73,11 +73,11 @@ SceneTestResult sceneTestResult(const Scene& scene, const SceneExpectationWatche
   return r;
 }
 
-SceneTestResult runSceneTest(const Scene& scene) {
+SceneTestResult runSceneTest(const Scene& scene, const std::function<void(const RenderProgress&)>& progress) {
   GLContext gl(scene.render.width, scene.render.height, *findProfile(scene.render.profile));
   GLCommandStream stream(gl, false);
   SceneExpectationWatcher watcher(scene, stream, gl);
-  renderScene(scene, stream);
+  renderScene(scene, stream, progress);
   watcher.finish();
   return sceneTestResult(scene, watcher, true);
 }

@@ -5,10 +5,12 @@
 // found, the pass it was read at, and its first failing pixel's history up
 // to there (the render's trace replayed, as `mpr step SCENE --pixel` words it).
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "algorithms/scene_expectations.hpp"
+#include "algorithms/scene_renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace mpr::cli {
@@ -29,8 +31,9 @@ struct SceneTestResult {
 // the failing pixel's history (a second render, with the trace).
 SceneTestResult sceneTestResult(const Scene& scene, const SceneExpectationWatcher& watcher, bool history);
 
-// Renders `scene` and checks its expectations.
-SceneTestResult runSceneTest(const Scene& scene);
+// Renders `scene` and checks its expectations; `progress` is renderScene's
+// (passLimitWatch stops a render past --max-passes by throwing).
+SceneTestResult runSceneTest(const Scene& scene, const std::function<void(const RenderProgress&)>& progress = {});
 
 // The failure as `mpr render` prints it and `mpr test` under its FAIL line:
 // the message, then the history, every line after the first indented.

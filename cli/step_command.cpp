@@ -12,6 +12,7 @@
 #include "algorithms/gl_command_stream.hpp"
 #include "algorithms/scene_renderer.hpp"
 #include "stepper/script_passes.hpp"
+#include "cli/scene_limits.hpp"
 #include "cli/step_page.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "stepper/gl_state_json.hpp"
@@ -30,17 +31,27 @@ struct StepOptions {
   bool htmlGiven = false;  // --html "" is an error, not "no page"
   bool pixelGiven = false;  // and so is --pixel ""
   int historyMb = 64;
+  SceneLimits limits;  // a scene's: its meshes and the passes of its render
 };
 
 // A script, or the trace of a scene's render read back as one.
-Script loadInput(const std::string& path, bool progress) {
+// A render past --max-passes throws PassLimitMessage.
+struct PassLimitMessage {
+  std::string text;
+};
+
+Script loadInput(const std::string& path, bool progress, const SceneLimits& limits) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext != ".yaml" && ext != ".yml") return loadScript(path);
-  const Scene scene = loadSceneFile(path);
+  const Scene scene = loadSceneFile(path, {}, limits.confine);
   if (progress) std::cerr << "mpr step: rendering " << path << " for its GL calls\n";
   GLContext gl(scene.render.width, scene.render.height, *findProfile(scene.render.profile));
   GLCommandStream stream(gl, true);
-  renderScene(scene, stream);
+  try {
+    renderScene(scene, stream, passLimitWatch(limits));
+  } catch (const PassLimitReached& stop) {
+    throw PassLimitMessage{passLimitMessage(scene, stop, limits)};
+  }
   return parseScript(stream.trace(), path + " (its render's GL calls)");
 }
 
@@ -48,7 +59,10 @@ int runStep(const StepOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   Script script;
   try {
-    script = loadInput(o.input, o.htmlGiven);
+    script = loadInput(o.input, o.htmlGiven, o.limits);
+  } catch (const PassLimitMessage& e) {
+    std::cerr << e.text << "\n";
+    return 2;
   } catch (const ScriptError& e) {
     std::cerr << e.what() << "\n";
     return 2;
@@ -145,6 +159,7 @@ void addStepCommand(CLI::App& app, int& exitCode) {
   auto html = c->add_option("--html", o->html, "DIR: write the stepper page there")->excludes(pixel)->excludes(state);
   c->add_option("--history-mb", o->historyMb, "with --html: the most megabytes of compressed pixel history (default 64)")
       ->needs(html);
+  addSceneLimitOptions(*c, o->limits);
   c->callback([o, html, pixel, &exitCode] {
     o->htmlGiven = html->count() > 0;
     o->pixelGiven = pixel->count() > 0;

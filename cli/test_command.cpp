@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/junit_xml.hpp"
+#include "cli/scene_limits.hpp"
 #include "cli/scene_test.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "pipeline/gl_script.hpp"
@@ -25,6 +26,7 @@ struct TestOptions {
   std::string profile;
   std::string junit;
   std::string report;
+  SceneLimits limits;  // the scenes': their meshes and the passes of their renders
 };
 
 // Every line after the first indented, so a multi-line explanation reads as
@@ -105,7 +107,7 @@ int runTest(const TestOptions& o) {
         item.scene = true;
         std::vector<std::string> sets;
         if (!o.profile.empty()) sets.push_back("render.profile=" + o.profile);
-        item.sceneData = loadSceneFile(p, sets);
+        item.sceneData = loadSceneFile(p, sets, o.limits.confine);
       } else {
         item.script = loadScript(p);
       }
@@ -149,7 +151,12 @@ int runTest(const TestOptions& o) {
     if (jc.classname.empty()) jc.classname = ".";
     if (items[i].scene) {
       // A scene: its expectations, read at their passes of the render.
-      const SceneTestResult r = runSceneTest(items[i].sceneData);
+      SceneTestResult r;
+      try {
+        r = runSceneTest(items[i].sceneData, passLimitWatch(o.limits));
+      } catch (const PassLimitReached& stop) {
+        r.errors.push_back(passLimitMessage(items[i].sceneData, stop, o.limits));
+      }
       if (r.errors.empty() && r.passed) {
         ++passed;
         std::cout << "ok   " << file << " (" << r.expectations << " expectation" << (r.expectations == 1 ? "" : "s")
@@ -232,6 +239,7 @@ void addTestCommand(CLI::App& app, int& exitCode) {
   c->add_option("--profile", o->profile, "hardware profile: indigo or mesa; overrides @profile and render.profile");
   c->add_option("--junit", o->junit, "write JUnit XML to FILE");
   c->add_option("--report", o->report, "write a difference image per failing probe into DIR");
+  addSceneLimitOptions(*c, o->limits);
   c->callback([o, &exitCode] { exitCode = runTest(*o); });
 }
 

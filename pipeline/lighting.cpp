@@ -55,20 +55,19 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
                               (l.position.w != 0.0f && (l.constantAttenuation != 1.0f || l.linearAttenuation != 0.0f ||
                                                         l.quadraticAttenuation != 0.0f));
       if (s.mesaShininess0Attenuated && attenuated) specular = std::pow(nDotL, std::min(nDotL, 128.0f));
-      if (specular != 0.0f) {
-        // An overflowed power times a zero colour (0 x infinity) is NaN;
-        // llvmpipe draws such a vertex as if the term were 0 (measured,
-        // lighting_nonfinite.gls: the diffuse term alone decides).
-        const Vec3 s = specular * Vec3(m.specular) * Vec3(l.specular);
-        term += Vec3(std::isnan(s.x) ? 0.0f : s.x, std::isnan(s.y) ? 0.0f : s.y, std::isnan(s.z) ? 0.0f : s.z);
-      }
+      // An overflowed power times a zero colour (0 x infinity) is NaN, and
+      // so is the sum: the clamp below decides (lighting_nonfinite.gls).
+      if (specular != 0.0f) term += specular * Vec3(m.specular) * Vec3(l.specular);
     }
     c += scale * term;
   }
   // A colour that overflowed (an unnormalised normal to a high power, 0 x
-  // infinity) is clamped as llvmpipe clamps it, NaN to 0, and drawn: GL
-  // leaves non-finite results open.
-  auto clamp01 = [](float v) { return std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f); };
+  // infinity, a NaN attenuation or material) is clamped as llvmpipe clamps
+  // the lit colour, NaN to 1 in each channel alpha included, and drawn: GL
+  // leaves non-finite results open. Measured with mpr conform:
+  // tests/hostile/nan_lighting.gls (Mesa's ffvertex_prog makes every lit
+  // term NaN times the attenuation; the clamp then gives 1).
+  auto clamp01 = [](float v) { return std::isnan(v) ? 1.0f : std::clamp(v, 0.0f, 1.0f); };
   return Vec4(clamp01(c.r), clamp01(c.g), clamp01(c.b), clamp01(m.diffuse.a));
 }
 

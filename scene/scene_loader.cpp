@@ -19,6 +19,7 @@
 #include "util/transforms.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/primitives.hpp"
+#include "scene/tessellation.hpp"
 #include "scene/ward_fit.hpp"
 
 namespace mpr {
@@ -688,6 +689,16 @@ class Loader {
   }
 
   void checkLimits(const YAML::Node& doc, const Scene& s) const {
+    // render.tessellation splits lit faces at render time: the scene it
+    // makes is held to the same budget as the one the file describes.
+    if (s.render.tessellation > 0.0f) {
+      const std::uint64_t n = tessellatedTriangleCount(s, s.render.tessellation);
+      if (n > kMaxSceneTriangles)
+        fail(doc["render"]["tessellation"], "render.tessellation " + doc["render"]["tessellation"].Scalar() +
+                                                " would split the lit faces into " + std::to_string(n) +
+                                                " triangles, more than the " + std::to_string(kMaxSceneTriangles) +
+                                                " a scene may hold (about 3 GB of mesh); raise it or simplify the scene");
+    }
     const HardwareProfile p = *findProfile(s.render.profile);
     // 1994 paper: recursion levels live below SHAD_MIN (half the stencil
     // range), shadow counts between SHAD_MIN and the maximum.

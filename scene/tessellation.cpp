@@ -53,14 +53,31 @@ void splitTriangle(const Mesh& in, const std::array<std::uint32_t, 3>& t, int k,
     }
 }
 
+// The k an object's edges are divided into (1: the object is kept as it is).
+int divisions(const Scene& scene, const SceneObject& o, float maxEdge) {
+  if (!(maxEdge > 0.0f)) return 1;
+  if (scene.materials[static_cast<std::size_t>(o.material)].specularKind() || o.mesh.triangles.empty()) return 1;
+  // Compared as a float first: a huge or NaN ratio must not reach the int.
+  const float wanted = std::ceil(longestEdge(o.mesh) / maxEdge);
+  int k = wanted >= kMaxTessellationDivisions ? kMaxTessellationDivisions : wanted >= 1.0f ? static_cast<int>(wanted) : 1;
+  while (k > 1 && o.mesh.triangles.size() * static_cast<std::size_t>(k) * k > kMaxTessellatedTriangles) --k;
+  return k;
+}
+
 }  // namespace
 
+std::uint64_t tessellatedTriangleCount(const Scene& scene, float maxEdge) {
+  std::uint64_t n = 0;
+  for (const SceneObject& o : scene.objects) {
+    const auto k = static_cast<std::uint64_t>(divisions(scene, o, maxEdge));
+    n += o.mesh.triangles.size() * k * k;
+  }
+  return n;
+}
+
 void tessellateLitObjects(Scene& scene, float maxEdge) {
-  if (!(maxEdge > 0.0f)) return;
   for (SceneObject& o : scene.objects) {
-    if (scene.materials[static_cast<std::size_t>(o.material)].specularKind() || o.mesh.triangles.empty()) continue;
-    int k = std::clamp(static_cast<int>(std::ceil(longestEdge(o.mesh) / maxEdge)), 1, kMaxTessellationDivisions);
-    while (k > 1 && o.mesh.triangles.size() * static_cast<std::size_t>(k) * k > kMaxTessellatedTriangles) --k;
+    const int k = divisions(scene, o, maxEdge);
     if (k == 1) continue;
     // Faces matter only to specular objects (planar-face checks, ref faces):
     // a lit object's are not kept.

@@ -4,6 +4,8 @@
 // (Gouraud): a wall that is one quad, its corners far from the light, is
 // too dark in the middle. Splitting its triangles gives the lighting more
 // places to be evaluated; the surface stays the same.
+#include <cstdint>
+
 #include "scene/scene.hpp"
 
 namespace mpr {
@@ -20,5 +22,9 @@ inline constexpr std::size_t kMaxTessellatedTriangles = 2'000'000;
 // its points bit for bit: no cracks, no T-junctions. Specular objects keep
 // their faces (the recursion looks through them as polygons).
 void tessellateLitObjects(Scene& scene, float maxEdge);
+
+// The triangles `scene` holds after tessellateLitObjects(scene, maxEdge),
+// without building them (the loader holds it to the scene's budget).
+std::uint64_t tessellatedTriangleCount(const Scene& scene, float maxEdge);
 
 }  // namespace mpr

@@ -155,9 +155,12 @@ bool sameOutputFile(const std::string& a, const std::string& b) {
   std::error_code ec;
   const fs::path pa = fs::absolute(a, ec).lexically_normal(), pb = fs::absolute(b, ec).lexically_normal();
   if (pa == pb) return true;
-  const fs::path ca = fs::weakly_canonical(pa, ec);
+  // The folders with their links resolved, the names as given: a link at
+  // an output's own name is replaced, not followed, so two links to one
+  // file are two outputs.
+  const fs::path ca = fs::weakly_canonical(pa.parent_path(), ec) / pa.filename();
   if (ec) return false;
-  const fs::path cb = fs::weakly_canonical(pb, ec);
+  const fs::path cb = fs::weakly_canonical(pb.parent_path(), ec) / pb.filename();
   if (ec) return false;
   return ca == cb;
 }

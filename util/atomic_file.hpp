@@ -65,8 +65,9 @@ std::string existingAncestorProblem(const std::filesystem::path& start);
 // empty name, an existing folder, a parent that exists and is not a folder.
 std::string outputFileProblem(const std::string& path);
 
-// True when two output paths name the same file (the same text after
-// normalising, or an existing file reached both ways).
+// True when two output paths name the same file: the same text after
+// normalising, or the same name in one folder reached both ways (links to
+// folders resolved; a link at the name itself is not, it is replaced).
 bool sameOutputFile(const std::string& a, const std::string& b);
 
 }  // namespace mpr

@@ -8,13 +8,14 @@
 
 namespace mpr {
 
-PipelineMeasurement measurePipeline(const Scene& scene, int repeat) {
+PipelineMeasurement measurePipeline(const Scene& scene, int repeat,
+                                    const std::function<void(const RenderProgress&)>& progress) {
   PipelineMeasurement m;
   for (int run = 0; run < std::max(1, repeat); ++run) {
     GLContext gl(scene.render.width, scene.render.height, *findProfile(scene.render.profile));
     GLCommandStream stream(gl, false);
     const auto t0 = std::chrono::steady_clock::now();
-    const RenderResult r = renderScene(scene, stream);
+    const RenderResult r = renderScene(scene, stream, progress);
     m.runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     if (run > 0) continue;
     m.views = r.counts.views;

@@ -2,8 +2,10 @@
 // One setting rendered by the pipeline as `mpr render` renders it, timed, with
 // the passes it took (the columns of the 1997 paper's Tables 2 and 3).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
+#include "algorithms/scene_renderer.hpp"
 #include "reference/accuracy/image_error.hpp"
 #include "scene/scene.hpp"
 
@@ -16,8 +18,10 @@ struct PipelineMeasurement {
   Rgb8Image image;               // the colour buffer (the same every run)
 };
 
-// Renders `scene` `repeat` times (at least once), each on a fresh context.
-PipelineMeasurement measurePipeline(const Scene& scene, int repeat);
+// Renders `scene` `repeat` times (at least once), each on a fresh context;
+// `progress` is renderScene's (mpr accuracy --max-passes stops a render by throwing).
+PipelineMeasurement measurePipeline(const Scene& scene, int repeat,
+                                    const std::function<void(const RenderProgress&)>& progress = {});
 
 // The planner's cost of `scene` in scene-rendering units: every view's
 // ambient pass, its light passes and its shadow-volume passes, predicted with

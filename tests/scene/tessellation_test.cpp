@@ -69,5 +69,39 @@ TEST(Tessellation, ZeroLeavesTheSceneAlone) {
   EXPECT_THROW(loadSceneText(kRoom, "s.yaml", {"render.tessellation=-1"}), SceneError);
 }
 
+// The count the loader holds to the budget is the count the split makes.
+TEST(Tessellation, CountPredictsTheSplit) {
+  for (const float edge : {1.0f, 0.3f, 0.01f, 0.0f, 1e30f}) {
+    Scene s = loadSceneText(kRoom, "s.yaml");
+    const std::uint64_t predicted = tessellatedTriangleCount(s, edge);
+    tessellateLitObjects(s, edge);
+    EXPECT_EQ(predicted, s.triangleCount()) << edge;
+  }
+}
+
+// Issue 15: a tessellation that would take the scene past its triangle
+// budget is refused where it is written (in the file or by --set).
+TEST(Tessellation, PastTheSceneBudgetIsALocatedError) {
+  std::string text = "render: {tessellation: 0.001}\nobjects:\n  - &b {primitive: box}\n";
+  for (int i = 1; i < 520; ++i) text += "  - *b\n";  // 520 x 12 x 64^2 = 25 559 040 > 24 Mi
+  try {
+    loadSceneText(text, "t.yaml");
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.yaml:1:24: render.tessellation 0.001 would split the lit faces into 25559040"),
+              std::string::npos) << e.what();
+  }
+  try {
+    loadSceneText(text, "t.yaml", {"render.tessellation=0.01"});
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("--set render.tessellation=0.01:1:1:", 0), 0u) << e.what();
+  }
+  // 511 boxes fit: 25 116 672 triangles.
+  std::string fits = "render: {tessellation: 0.001}\nobjects:\n  - &b {primitive: box}\n";
+  for (int i = 1; i < 511; ++i) fits += "  - *b\n";
+  EXPECT_EQ(tessellatedTriangleCount(loadSceneText(fits, "f.yaml"), 0.001f), 25'116'672u);
+}
+
 }  // namespace
 }  // namespace mpr

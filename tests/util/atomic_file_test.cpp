@@ -116,6 +116,12 @@ TEST(SameOutputFile, SeesThroughSpellingsAndLinks) {
   fs::create_directory(d.path / "real");
   fs::create_directory_symlink(d.path / "real", d.path / "link");
   EXPECT_TRUE(sameOutputFile((d.path / "real" / "x").string(), (d.path / "link" / "x").string()));
+  // Two links to one file are two outputs: each name's link is replaced, not followed.
+  std::ofstream(d.path / "victim") << "v";
+  fs::create_symlink(d.path / "victim", d.path / "t.gls");
+  fs::create_symlink(d.path / "victim", d.path / "s.json");
+  EXPECT_FALSE(sameOutputFile((d.path / "t.gls").string(), (d.path / "s.json").string()));
+  EXPECT_TRUE(sameOutputFile((d.path / "t.gls").string(), (d.path / "link" / ".." / "t.gls").string()));
 }
 
 }  // namespace

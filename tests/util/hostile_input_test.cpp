@@ -81,5 +81,24 @@ TEST(PrintableText, EscapesControlCharacters) {
   EXPECT_EQ(printableText("caf\xc3\xa9"), "caf\xc3\xa9");  // UTF-8 passes
 }
 
+// A 10 MB unknown name is quoted by its ends: the message keeps its place
+// and its reason, and stays under 1 KiB and a bit.
+TEST(PrintableText, CutsAHugeMessageInTheMiddle) {
+  const std::string exact(kMaxPrintableBytes, 'g');
+  EXPECT_EQ(printableText(exact), exact);
+  const std::string huge = "f.gls:1:1: '" + std::string(10'000'000, 'g') + "' is not a call";
+  const std::string cut = printableText(huge);
+  EXPECT_EQ(cut.rfind("f.gls:1:1: 'ggg", 0), 0u);
+  EXPECT_EQ(cut.substr(cut.size() - 15), "' is not a call");
+  EXPECT_NE(cut.find(" ... (" + std::to_string(huge.size() - 900) + " bytes left out) ... "), std::string::npos);
+  EXPECT_LT(cut.size(), kMaxPrintableBytes + 64);
+  // A cut never splits a UTF-8 sequence: after "x", byte 600 is the second
+  // byte of a two-byte character, so the cut moves back to byte 599.
+  std::string accents;
+  while (accents.size() < 2000) accents += "\xc3\xa9";
+  const std::string t = printableText("x" + accents);
+  EXPECT_EQ(t.substr(0, 599 + 5), "x" + accents.substr(0, 598) + " ... ");
+}
+
 }  // namespace
 }  // namespace mpr
