@@ -29,7 +29,7 @@ namespace mpr {
 
 using GLenumValue = std::uint32_t;
 
-struct LlvmpipeDepth;  // llvmpipe's depth planes for one triangle (gl_context_draw.cpp)
+struct LlvmpipeDepth;  // llvmpipe's depth planes for one triangle (pipeline/llvmpipe_depth.hpp)
 
 // Where Mesa 22.3 departs from GL 1.1 the emulated Iris follows GL 1.1; `mpr
 // conform` replays a script once more with a departure emulated to tell

@@ -1,0 +1,159 @@
+// llvmpipe's depth planes for one MPR triangle (see llvmpipe_depth.hpp).
+#include "pipeline/llvmpipe_depth.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+
+#include "raster/fixed_point.hpp"
+
+namespace mpr {
+namespace {
+
+LlWindow toLlWindow(const DrawVertex& v, const WindowTransform& t) {
+  const float oow = 1.0f / v.clip.w;
+  const float flippedTransY = static_cast<float>(t.fbHeight) - t.transY;
+  if (v.original)  // draw_llvm.c generate_viewport: (clip * 1/w) * scale + translate, one fmuladd
+    return {std::fma(v.clip.x * oow, t.scaleX, t.transX), std::fma(v.clip.y * oow, -t.scaleY, flippedTransY),
+            std::fma(v.clip.z * oow, t.scaleZ, t.transZ)};
+  // draw_pipe_clip.c interp(): the same in C, unfused
+  return {v.clip.x * oow * t.scaleX + t.transX, v.clip.y * oow * -t.scaleY + flippedTransY,
+          v.clip.z * oow * t.scaleZ + t.transZ};
+}
+
+// draw's fixed clip planes in its bit order (draw_context.c draw->plane[0..5],
+// the clip mask bits of draw_llvm.c generate_clipmask): x <= w, x >= -w,
+// y <= w, y >= -w, z >= -w, z <= w; user planes follow as bits 6 and up.
+constexpr float kDrawPlanes[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1},
+                                     {0, 1, 0, 1},  {0, 0, 1, 1}, {0, 0, -1, 1}};
+
+Vec4 drawPlane(std::size_t i, const std::vector<ClipPlane>& userPlanes) {
+  return i < 6 ? Vec4(kDrawPlanes[i][0], kDrawPlanes[i][1], kDrawPlanes[i][2], kDrawPlanes[i][3]) : userPlanes[i - 6];
+}
+
+// Clips a triangle as draw_pipe_clip.c do_clip_tri does (Mesa 22.3): plane by
+// plane of `mask` (the vertices' clip masks together) in bit order, each new
+// vertex interpolated from the vertex nearer the plane, out + t * (in - out)
+// per component; the polygon keeps its first vertex, the provoking one of the
+// fan emit_poly makes. (MPR's own clipper, which decides coverage, orders
+// planes and intersections differently; the polygon is the same up to
+// rounding.)
+std::vector<DrawVertex> clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::uint32_t mask,
+                                     const std::vector<ClipPlane>& userPlanes) {
+  std::vector<DrawVertex> in(tri.begin(), tri.end()), out;
+  auto dot4 = [](const Vec4& a, const Vec4& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; };
+  auto lerp = [](float t, const DrawVertex& o, const DrawVertex& i) {
+    return DrawVertex{Vec4(o.clip.x + t * (i.clip.x - o.clip.x), o.clip.y + t * (i.clip.y - o.clip.y),
+                           o.clip.z + t * (i.clip.z - o.clip.z), o.clip.w + t * (i.clip.w - o.clip.w)),
+                      false};
+  };
+  while (mask != 0 && in.size() >= 3) {
+    const int planeIndex = std::countr_zero(mask);
+    mask &= ~(1u << planeIndex);
+    const Vec4 plane = drawPlane(static_cast<std::size_t>(planeIndex), userPlanes);
+    out.clear();
+    DrawVertex prev = in[0];
+    float dpPrev = dot4(prev.clip, plane);
+    if (!std::isfinite(dpPrev)) return {};
+    in.push_back(in[0]);
+    for (std::size_t i = 1; i < in.size(); ++i) {
+      const DrawVertex& v = in[i];
+      const float dp = dot4(v.clip, plane);
+      if (!std::isfinite(dp)) return {};
+      bool differentSign;
+      if (dpPrev >= 0.0f) {
+        out.push_back(prev);
+        differentSign = dp < 0.0f;
+      } else {
+        differentSign = !(dp < 0.0f);
+      }
+      if (differentSign) {
+        const float denom = dp - dpPrev;
+        if (dp < 0.0f)  // going out
+          out.push_back(-dp < dpPrev ? lerp(dp / denom, v, prev) : lerp(-dpPrev / denom, prev, v));
+        else  // coming back in
+          out.push_back(-dpPrev < dp ? lerp(-dpPrev / denom, prev, v) : lerp(dp / denom, v, prev));
+      }
+      prev = v;
+      dpPrev = dp;
+    }
+    in.swap(out);
+  }
+  return in;
+}
+
+}  // namespace
+
+// The vertex's clip mask as draw_llvm.c generate_clipmask computes it.
+std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes) {
+  std::uint32_t m = 0;
+  if (p.x > p.w) m |= 1u;
+  if (p.x + p.w < 0.0f) m |= 2u;
+  if (p.y > p.w) m |= 4u;
+  if (p.y + p.w < 0.0f) m |= 8u;
+  if (p.z + p.w < 0.0f) m |= 16u;
+  if (p.z > p.w) m |= 32u;
+  for (std::size_t i = 0; i < userPlanes.size(); ++i) {
+    const Vec4& u = userPlanes[i];
+    const float d = std::fma(u.w, p.w, std::fma(u.z, p.z, std::fma(u.y, p.y, u.x * p.x)));
+    if (0.0f > d || !std::isfinite(d)) m |= 1u << (6 + i);
+  }
+  return m;
+}
+
+void LlvmpipeDepth::add(const Vec4& a, const Vec4& b, const Vec4& c) {
+  const std::array<DrawVertex, 3> tri = {DrawVertex{a, true}, {b, true}, {c, true}};
+  // draw_pipe_clip.c clip_tri: inside every plane passes as it is; outside
+  // one plane with all three vertices is dropped; else clipped and fanned.
+  const std::uint32_t ma = drawClipMask(a, *userPlanes), mb = drawClipMask(b, *userPlanes),
+                      mc = drawClipMask(c, *userPlanes);
+  if ((ma | mb | mc) == 0) return setUp(tri[0], tri[1], tri[2]);
+  if ((ma & mb & mc) != 0) return;
+  const std::vector<DrawVertex> poly = clipLikeDraw(tri, ma | mb | mc, *userPlanes);
+  for (std::size_t i = 2; i < poly.size(); ++i) setUp(poly[i - 1], poly[i], poly[0]);
+}
+
+void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const DrawVertex& d2) {
+  LlWindow p0 = toLlWindow(d0, window), p1 = toLlWindow(d1, window);
+  const LlWindow p2 = toLlWindow(d2, window);
+  // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions.
+  auto fixed = [](float f) { return saturateToInt64(std::nearbyint(static_cast<double>(f) * 256.0)); };
+  const std::int64_t area = (fixed(p0.x) - fixed(p1.x)) * (fixed(p2.y) - fixed(p0.y)) -
+                            (fixed(p2.x) - fixed(p0.x)) * (fixed(p0.y) - fixed(p1.y));
+  if (area == 0) return;  // llvmpipe draws nothing
+  if (area < 0) std::swap(p0, p1);
+  const float dx01 = p0.x - p1.x, dy01 = p0.y - p1.y;
+  const float dx20 = p2.x - p0.x, dy20 = p2.y - p0.y;
+  const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
+  const float dx20ooa = dx20 * ooa, dy20ooa = dy20 * ooa;
+  const float dx01ooa = dx01 * ooa, dy01ooa = dy01 * ooa;
+  const float dz01 = p0.z - p1.z, dz20 = p2.z - p0.z;
+  Triangle t;
+  t.dzdx = dz01 * dy20ooa - dz20 * dy01ooa;
+  t.dzdy = dz20 * dx01ooa - dz01 * dx20ooa;
+  t.a0 = p0.z - (t.dzdx * (p0.x - 0.5f) + t.dzdy * (p0.y - 0.5f));
+  t.v = {p0, p1, p2};
+  triangles.push_back(t);
+}
+
+const LlvmpipeDepth::Triangle& LlvmpipeDepth::containing(double px, double py) const {
+  const Triangle* best = &triangles[0];
+  double bestDistance = -std::numeric_limits<double>::infinity();
+  for (const Triangle& t : triangles) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      const LlWindow& a = t.v[i];
+      const LlWindow& b = t.v[(i + 1) % 3];
+      const double ex = static_cast<double>(b.x) - a.x, ey = static_cast<double>(b.y) - a.y;
+      const double length = std::hypot(ex, ey);
+      if (length > 0.0) nearest = std::min(nearest, (ex * (a.y - py) - ey * (a.x - px)) / length);
+    }
+    if (nearest > bestDistance) {
+      bestDistance = nearest;
+      best = &t;
+    }
+  }
+  return *best;
+}
+
+}  // namespace mpr

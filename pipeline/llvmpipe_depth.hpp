@@ -1,0 +1,89 @@
+#pragma once
+// llvmpipe's depth arithmetic, reproduced bit for bit for MPR's triangles:
+// the window transform Mesa's state tracker hands llvmpipe, the draw
+// module's clipper and fan, and llvmpipe's single-precision depth planes.
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "pipeline/clipping.hpp"
+#include "util/vecmath.hpp"
+
+namespace mpr {
+
+// The viewport transform as Mesa's state tracker hands it to llvmpipe: OSMesa
+// draws into a window-system buffer, so y is flipped (st_atom_viewport.c:
+// scale[1] = -scale[1], translate[1] = fb_height - translate[1]) and llvmpipe
+// counts rows downwards from the top.
+struct WindowTransform {
+  float scaleX, transX, scaleY, transY, scaleZ, transZ;
+  int fbHeight;
+};
+
+// A clip-space vertex as Mesa's draw module carries it: `original` for one
+// that came out of the vertex shader, false for one the clipper made.
+struct DrawVertex {
+  Vec4 clip;
+  bool original;
+};
+
+struct LlWindow {  // window position in llvmpipe's y-down space
+  float x, y, z;
+};
+
+// The vertex's clip mask as draw_llvm.c generate_clipmask computes it: bit
+// i set where the vertex lies outside draw's plane i (see llvmpipe_depth.cpp).
+std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes);
+
+// llvmpipe's depth for the fragments of one MPR triangle, bit for bit.
+//
+// llvmpipe does not interpolate the exact plane: it sets up a0, dz/dx, dz/dy
+// in single precision at the window origin and evaluates them per pixel, so
+// its depths drift from the exact plane by up to about +-1.5 units of 2^24;
+// this reproduces that arithmetic, and the triangles it is applied to:
+//  - window coordinates: see toLlWindow;
+//  - the triangles llvmpipe sets up: those of Mesa's draw module, clipped as
+//    clipLikeDraw does and fanned as draw_pipe_clip.c emit_poly does,
+//    (p[i-1], p[i], p[0]); a clockwise one (in llvmpipe's y-down space) is
+//    set up as (v1, v0, v2) (lp_setup_tri.c triangle_both/triangle_cw, last
+//    vertex provoking);
+//  - the plane: lp_state_setup.c init_args/calc_coef4, single precision,
+//    unfused: ooa = 1 / (dx01 * dy20 - dy01 * dx20),
+//    dadx = da01 * (dy20 * ooa) - da20 * (dy01 * ooa),
+//    dady = da20 * (dx01 * ooa) - da01 * (dx20 * ooa),
+//    a0 = z0 - (dadx * (x0 - 0.5) + dady * (y0 - 0.5));
+//  - per pixel: lp_bld_interp.c attribs_update_simple, a0 + x * dadx +
+//    y * dady as two fused lp_build_fmuladd (this CPU has FMA), x and y the
+//    integer pixel corner in llvmpipe's space.
+// A clipped triangle becomes several llvmpipe triangles whose fan differs
+// from MPR's, so each pixel takes the plane of the one containing its centre.
+struct LlvmpipeDepth {
+  struct Triangle {
+    float a0, dzdx, dzdy;
+    std::array<LlWindow, 3> v;  // in the order set up, counter-clockwise in y-down space
+  };
+
+  WindowTransform window;
+  const std::vector<ClipPlane>* userPlanes;
+  std::vector<Triangle> triangles;
+
+  // Adds the triangles draw and llvmpipe make of (a, b, c), given in the
+  // order llvmpipe receives it.
+  void add(const Vec4& a, const Vec4& b, const Vec4& c);
+
+  float at(int x, int yDown) const {
+    const Triangle& t = triangles.size() == 1 ? triangles[0] : containing(x + 0.5, yDown + 0.5);
+    return std::fma(t.dzdy, static_cast<float>(yDown), std::fma(t.dzdx, static_cast<float>(x), t.a0));
+  }
+
+ private:
+  void setUp(const DrawVertex& d0, const DrawVertex& d1, const DrawVertex& d2);
+
+  // The triangle whose edges are farthest outwards from the point: the one
+  // containing it, or the nearest where a pixel centre MPR covers falls just
+  // outside llvmpipe's polygon.
+  const Triangle& containing(double px, double py) const;
+};
+
+}  // namespace mpr
