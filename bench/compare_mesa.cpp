@@ -2,7 +2,8 @@
 // softpipe (bench/mesa_gl, through OSMesa) as whole processes: several runs,
 // the tools alternating within each run so that a machine busy with other
 // work slows them alike; prints per tool the median wall time, the ratio to
-// llvmpipe's median and the peak resident memory (ru_maxrss from wait4).
+// llvmpipe's median, the median CPU time (user + system) and the peak
+// resident memory (ru_maxrss from wait4).
 //
 // Usage: compare_mesa [--runs N] [--threads N] [--mpr PATH] [--mesa-gl PATH]
 //                     [--no-softpipe] SCRIPT...
@@ -26,6 +27,7 @@ namespace {
 
 struct Sample {
   double seconds;
+  double cpuSeconds;  // user + system, less sensitive than wall time to other work on the machine
   long peakKiB;
 };
 
@@ -58,6 +60,8 @@ bool runOnce(const Tool& tool, const std::string& script, Sample& out) {
   if (wait4(pid, &status, 0, &usage) != pid) return false;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.peakKiB = usage.ru_maxrss;  // kilobytes on Linux
+  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+  out.cpuSeconds = seconds(usage.ru_utime) + seconds(usage.ru_stime);
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
@@ -113,14 +117,14 @@ int main(int argc, char** argv) {
         }
         t.samples.push_back(s);
       }
-    auto medianOf = [](const Tool& t) {
+    auto medianOf = [](const Tool& t, bool cpu = false) {
       std::vector<double> v;
-      for (const Sample& s : t.samples) v.push_back(s.seconds);
+      for (const Sample& s : t.samples) v.push_back(cpu ? s.cpuSeconds : s.seconds);
       return median(v);
     };
     const double llvmpipe = medianOf(tools[1]);
     std::printf("%s (%d runs%s)\n", script.c_str(), runs, threads.empty() ? "" : (", " + threads + " threads").c_str());
-    std::printf("  %-9s %9s %9s %9s %8s %10s\n", "tool", "median s", "min s", "max s", "ratio", "peak MB");
+    std::printf("  %-9s %9s %9s %9s %8s %10s %10s\n", "tool", "median s", "min s", "max s", "ratio", "cpu s", "peak MB");
     for (const Tool& t : tools) {
       double lo = t.samples[0].seconds, hi = lo;
       long peak = 0;
@@ -129,8 +133,8 @@ int main(int argc, char** argv) {
         hi = std::max(hi, s.seconds);
         peak = std::max(peak, s.peakKiB);
       }
-      std::printf("  %-9s %9.3f %9.3f %9.3f %8.2f %10.1f\n", t.name.c_str(), medianOf(t), lo, hi,
-                  medianOf(t) / llvmpipe, static_cast<double>(peak) / 1024.0);
+      std::printf("  %-9s %9.3f %9.3f %9.3f %8.2f %10.3f %10.1f\n", t.name.c_str(), medianOf(t), lo, hi,
+                  medianOf(t) / llvmpipe, medianOf(t, true), static_cast<double>(peak) / 1024.0);
     }
   }
   return 0;

@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
@@ -35,9 +37,13 @@ constexpr CallSpec kCalls[] = {
 };
 
 const CallSpec* findCall(std::string_view name) {
-  for (const CallSpec& c : kCalls)
-    if (c.name == name) return &c;
-  return nullptr;
+  static const std::unordered_map<std::string_view, const CallSpec*> byName = [] {
+    std::unordered_map<std::string_view, const CallSpec*> m;
+    for (const CallSpec& c : kCalls) m.emplace(c.name, &c);
+    return m;
+  }();
+  const auto it = byName.find(name);
+  return it == byName.end() ? nullptr : it->second;
 }
 
 // Capabilities and modes that GL accepts but the emulated Iris subset does not
@@ -88,6 +94,15 @@ class Parser {
   }
 
   std::optional<double> parseNumber(std::string_view t) const {
+    // A plain decimal ([-]digits[.digits][e[-]digits]) through from_chars:
+    // correctly rounded, as strtod is, so the same double; anything else
+    // (a sign '+', hex, a suffix, inf, out of range) takes strtod's path.
+    const bool plain = !t.empty() && t[0] != '+' && t.find_first_not_of("0123456789.-+eE") == std::string_view::npos;
+    if (plain) {
+      double v = 0.0;
+      const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v, std::chars_format::general);
+      if (ec == std::errc() && end == t.data() + t.size()) return v;
+    }
     std::string s(t);
     if (!s.empty() && (s.back() == 'f' || s.back() == 'F') && s.find_first_of("0123456789") != std::string::npos &&
         s.rfind("0x", 0) != 0 && s.rfind("-0x", 0) != 0 && s.rfind("+0x", 0) != 0)
@@ -123,27 +138,32 @@ class Parser {
     ScriptArg a;
     a.column = tok.column;
     a.text = std::string(tok.text);
-    const std::string where = "argument " + std::to_string(index + 1) + " of " + std::string(callName);
+    // Built only for a message: an argument that parses costs no string.
+    struct Where {
+      int index;
+      std::string_view callName;
+      operator std::string() const { return "argument " + std::to_string(index + 1) + " of " + std::string(callName); }
+    } const where{index, callName};
     const bool isName = tok.text.rfind("GL_", 0) == 0;
     if (isName && kind != 'b') {
       const auto v = glEnumValue(tok.text);
-      if (!v) fail(line, tok.column, "unknown GL enumerant '" + a.text + "' (" + where + ")");
+      if (!v) fail(line, tok.column, "unknown GL enumerant '" + a.text + "' (" + std::string(where) + ")");
       if (kind == 'z' && *v != GL_TRUE && *v != GL_FALSE)
-        fail(line, tok.column, where + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
-      if (kind == 'u') fail(line, tok.column, where + " is an unsigned byte (0..255), not " + a.text);
+        fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
+      if (kind == 'u') fail(line, tok.column, std::string(where) + " is an unsigned byte (0..255), not " + a.text);
       a.bits = *v;
       a.number = *v;
       return a;
     }
     switch (kind) {
       case 'e':
-        fail(line, tok.column, where + " is an enum: expected a GL_ name, got '" + a.text + "'");
+        fail(line, tok.column, std::string(where) + " is an enum: expected a GL_ name, got '" + a.text + "'");
       case 'b': {
         std::uint32_t bits = 0;
         if (!isName) {
           const auto n = parseInteger(tok.text);
           if (!n || *n < 0 || *n > 0xFFFFFFFFLL)
-            fail(line, tok.column, where + " is a bitfield: GL names joined by '|', got '" + a.text + "'");
+            fail(line, tok.column, std::string(where) + " is a bitfield: GL names joined by '|', got '" + a.text + "'");
           bits = static_cast<std::uint32_t>(*n);
         } else {
           size_t start = 0;
@@ -153,7 +173,7 @@ class Parser {
             const auto v = glEnumValue(part);
             if (!v)
               fail(line, tok.column + static_cast<int>(start),
-                   "unknown GL enumerant '" + std::string(part) + "' in bitfield (" + where + ")");
+                   "unknown GL enumerant '" + std::string(part) + "' in bitfield (" + std::string(where) + ")");
             bits |= *v;
             if (bar == std::string_view::npos) break;
             start = bar + 1;
@@ -167,20 +187,20 @@ class Parser {
       case 'u':
       case 'z': {
         const auto n = parseInteger(tok.text);
-        if (!n) fail(line, tok.column, where + " is an integer: expected a decimal or 0x literal, got '" + a.text + "'");
+        if (!n) fail(line, tok.column, std::string(where) + " is an integer: expected a decimal or 0x literal, got '" + a.text + "'");
         if (kind == 'u' && (*n < 0 || *n > 255))
-          fail(line, tok.column, where + " is an unsigned byte: " + a.text + " is outside 0..255");
+          fail(line, tok.column, std::string(where) + " is an unsigned byte: " + a.text + " is outside 0..255");
         if (kind == 'z' && *n != 0 && *n != 1)
-          fail(line, tok.column, where + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
+          fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
         if (*n < -2147483648LL || *n > 4294967295LL)
-          fail(line, tok.column, where + ": " + a.text + " does not fit in 32 bits");
+          fail(line, tok.column, std::string(where) + ": " + a.text + " does not fit in 32 bits");
         a.bits = static_cast<std::uint32_t>(*n);
         a.number = static_cast<double>(*n);
         return a;
       }
       default: {  // f, m, v
         const auto v = parseNumber(tok.text);
-        if (!v) fail(line, tok.column, where + " is a number: expected a C literal, got '" + a.text + "'");
+        if (!v) fail(line, tok.column, std::string(where) + " is a number: expected a C literal, got '" + a.text + "'");
         a.number = *v;
         return a;
       }
@@ -193,6 +213,8 @@ class Parser {
     script.text = std::string(text);
     bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false, inBegin = false;
     std::set<std::string> snapshots;
+    // A command a line at most: one allocation, not a growing copy of them all.
+    script.commands.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
     // Probes are checked against the window once the whole script is read.
     std::vector<PendingProbe> probes;
     std::optional<PendingProbe> picture;  // an @expect-picture awaiting its @end
