@@ -7,9 +7,9 @@
 //
 // Usage: compare_mesa [--runs N] [--threads N] [--mpr PATH] [--mesa-gl PATH]
 //                     [--no-softpipe] SCRIPT...
-// --threads N passes --threads N to mpr and LP_NUM_THREADS=N to llvmpipe;
-// without it each uses its own default (all cores). MPR runs the script with
-// the mesa profile, the buffers OSMesa's context has.
+// --threads N sets LP_NUM_THREADS=N for llvmpipe (its default: a thread a
+// core; MPR draws on one). MPR runs the script with the mesa profile, the
+// buffers OSMesa's context has.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -102,7 +102,6 @@ int main(int argc, char** argv) {
   for (const std::string& script : scripts) {
     std::vector<Tool> tools;
     Tool m{"mpr", {mpr, "gl", "--quiet", "--profile", "mesa"}, {}, {}};
-    if (!threads.empty()) m.argv.insert(m.argv.end(), {"--threads", threads});
     tools.push_back(m);
     Tool lp{"llvmpipe", {mesaGl, "--driver", "llvmpipe"}, {}, {}};
     if (!threads.empty()) lp.env.push_back("LP_NUM_THREADS=" + threads);
