@@ -1,11 +1,13 @@
 // Runs a GL script on Mesa through OSMesa as a whole process, for
-// bench/compare_mesa: the script is read with MPR's parser and replayed by
-// conformance/'s replayer (the same one `mpr conform` uses), the buffers
-// read back once at the end. Usage: mesa_gl [--driver llvmpipe|softpipe] SCRIPT
+// bench/compare_mesa: the script is read with MPR's parser and streamed as
+// `mpr gl` streams it (checked, then replayed while parsed) through
+// conformance/'s replayer (the one `mpr conform` uses), the buffers read
+// back once at the end. Usage: mesa_gl [--driver llvmpipe|softpipe] SCRIPT
 // (LP_NUM_THREADS sets llvmpipe's threads; Mesa's default is one a core).
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <string>
 
 #include "conformance/mesa_replayer.hpp"
@@ -23,9 +25,18 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const mpr::Script script = mpr::loadScript(path);
-    const mpr::MesaReplay replay = mpr::replayOnMesa(script, driver);
-    std::printf("%s: %zu calls on %s\n", path.c_str(), script.callCount(), replay.renderer.c_str());
+    // Streamed as `mpr gl` streams it: checked first, then replayed while parsed.
+    const std::string text = mpr::readScriptText(path);
+    const mpr::Script header = mpr::checkScript(text, path);
+    std::size_t calls = 0;
+    const mpr::MesaReplay replay =
+        mpr::replayOnMesa(header, driver, [&](const std::function<void(const mpr::ScriptCommand&)>& replay) {
+          mpr::streamScript(text, header, [&](mpr::ScriptCommand&& c) {
+            calls += c.kind == mpr::ScriptCommand::Kind::Call;
+            replay(c);
+          });
+        });
+    std::printf("%s: %zu calls on %s\n", path.c_str(), calls, replay.renderer.c_str());
   } catch (const mpr::ScriptError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -87,7 +88,16 @@ std::vector<Token> tokenize(std::string_view line) {
 
 class Parser {
  public:
+  // How parse hands commands on: Store keeps them in the Script; Check keeps
+  // none (a first pass that finds every error); Stream hands each to the
+  // sink as soon as it is complete, probes placed in the window `streamSize`
+  // that the Check pass found.
+  enum class Mode { Store, Check, Stream };
+  using Sink = std::function<void(ScriptCommand&&)>;
+
   Parser(const std::string& file) : file_(file) {}
+  Parser(const std::string& file, Mode mode, Sink sink = {}, int streamWidth = 0, int streamHeight = 0)
+      : file_(file), mode_(mode), sink_(std::move(sink)), streamWidth_(streamWidth), streamHeight_(streamHeight) {}
 
   [[noreturn]] void fail(int line, int column, const std::string& message) const {
     throw ScriptError(file_, line, column, message);
@@ -210,14 +220,16 @@ class Parser {
   Script parse(std::string_view text) {
     Script script;
     script.file = file_;
-    script.text = std::string(text);
+    if (mode_ == Mode::Store) script.text = std::string(text);
     bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false, inBegin = false;
     std::set<std::string> snapshots;
     // A command a line at most: one allocation, not a growing copy of them all.
-    script.commands.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+    if (mode_ == Mode::Store)
+      script.commands.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
     // Probes are checked against the window once the whole script is read.
     std::vector<PendingProbe> probes;
     std::optional<PendingProbe> picture;  // an @expect-picture awaiting its @end
+    ScriptCommand pictureCommand;         // its command, held back until @end when streaming
     int lineNo = 0;
     size_t pos = 0;
     while (pos <= text.size()) {
@@ -238,7 +250,13 @@ class Parser {
           if (toks.size() != 1) fail(lineNo, toks[1].column, "@end takes nothing");
           if (picture->probe->cells.empty()) fail(lineNo, head.column, "@expect-picture has no rows before @end");
           finishPicture(*picture);
-          probes.push_back(std::move(*picture));
+          if (mode_ == Mode::Stream) {
+            placeProbe(*picture, streamWidth_, streamHeight_);
+            pictureCommand.probe = std::move(picture->probe);
+            emit(script, std::move(pictureCommand));
+          } else {
+            probes.push_back(std::move(*picture));
+          }
           picture.reset();
         } else {
           addPictureRow(*picture, toks, lineNo);
@@ -254,7 +272,14 @@ class Parser {
         cmd.line = lineNo;
         cmd.label = std::string(line.substr(static_cast<size_t>(head.column - 1),
                                             static_cast<size_t>(toks.back().column - head.column) + toks.back().text.size()));
-        script.commands.push_back(std::move(cmd));
+        if (mode_ == Mode::Stream && head.text == "@expect") {
+          placeProbe(pp, streamWidth_, streamHeight_);
+          cmd.probe = std::move(pp.probe);
+          emit(script, std::move(cmd));
+          continue;
+        }
+        if (mode_ == Mode::Stream) pictureCommand = std::move(cmd);  // handed on at its @end
+        else emit(script, std::move(cmd));
         if (head.text == "@expect") probes.push_back(std::move(pp));
         else picture = std::move(pp);
         continue;
@@ -297,7 +322,7 @@ class Parser {
           const size_t from = static_cast<size_t>(toks[1].column - 1);
           const Token& last = toks.back();
           cmd.label = std::string(line.substr(from, static_cast<size_t>(last.column - 1) + last.text.size() - from));
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         if (head.text == "@snapshot") {
@@ -310,21 +335,21 @@ class Parser {
           if (!snapshots.insert(name).second) fail(lineNo, toks[1].column, "snapshot '" + name + "' is taken twice");
           cmd.kind = ScriptCommand::Kind::Snapshot;
           cmd.label = name;
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         if (head.text == "@window_map") {
           // docs/gl-script-directives.md: 9 numbers (column by column) or off.
           cmd.kind = ScriptCommand::Kind::WindowMap;
           if (toks.size() == 2 && toks[1].text == "off") {
-            script.commands.push_back(std::move(cmd));
+            emit(script, std::move(cmd));
             continue;
           }
           if (toks.size() != 10)
             fail(lineNo, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
           for (std::size_t t = 1; t < toks.size(); ++t)
             cmd.args.push_back(parseArg('f', toks[t], lineNo, "@window_map", static_cast<int>(t - 1)));
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         if (head.text == "@count_fragments") {
@@ -336,7 +361,7 @@ class Parser {
           counting = begin;
           cmd.kind = ScriptCommand::Kind::FragmentCount;
           cmd.label = std::string(toks[1].text);
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         fail(lineNo, head.column, "unknown directive '" + std::string(head.text) +
@@ -391,12 +416,12 @@ class Parser {
       checkSubset(*spec, cmd, lineNo);
       if (cmd.call == GLCall::Begin) inBegin = true;
       if (cmd.call == GLCall::End) inBegin = false;
-      script.commands.push_back(std::move(cmd));
+      emit(script, std::move(cmd));
     }
     if (picture) fail(picture->line, picture->column, "@expect-picture without @end");
     for (PendingProbe& pp : probes) {
       placeProbe(pp, script.width, script.height);
-      script.commands[pp.command].probe = std::move(pp.probe);
+      if (mode_ == Mode::Store) script.commands[pp.command].probe = std::move(pp.probe);
     }
     return script;
   }
@@ -579,7 +604,15 @@ class Parser {
   }
 
  private:
+  void emit(Script& script, ScriptCommand&& cmd) const {
+    if (mode_ == Mode::Store) script.commands.push_back(std::move(cmd));
+    else if (mode_ == Mode::Stream) sink_(std::move(cmd));
+  }
+
   std::string file_;
+  Mode mode_ = Mode::Store;
+  Sink sink_;
+  int streamWidth_ = 0, streamHeight_ = 0;
 };
 
 }  // namespace
@@ -633,14 +666,22 @@ std::size_t Script::probeCount() const {
 
 Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }
 
-Script loadScript(const std::string& path) {
-  std::string text;
+Script checkScript(std::string_view text, const std::string& file) {
+  return Parser(file, Parser::Mode::Check).parse(text);
+}
+
+void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
+  Parser(header.file, Parser::Mode::Stream, sink, header.width, header.height).parse(text);
+}
+
+std::string readScriptText(const std::string& path) {
   try {
-    text = readInputFile(path, kMaxScriptBytes, "the script");
+    return readInputFile(path, kMaxScriptBytes, "the script");
   } catch (const std::runtime_error& e) {
     throw ScriptError(path, 0, 0, e.what());
   }
-  return parseScript(text, path);
 }
+
+Script loadScript(const std::string& path) { return parseScript(readScriptText(path), path); }
 
 }  // namespace mpr
