@@ -28,9 +28,14 @@ struct GlOptions {
 };
 
 int runGl(const GlOptions& o) {
+  // The script runs as it is read (streamScript): a first pass finds every
+  // script error before anything runs or is written, and no parsed copy of
+  // the whole script is held.
+  std::string text;
   Script script;
   try {
-    script = loadScript(o.script);
+    text = readScriptText(o.script);
+    script = checkScript(text, o.script);
   } catch (const ScriptError& e) {
     std::cerr << e.what() << "\n";
     return 2;
@@ -79,9 +84,14 @@ int runGl(const GlOptions& o) {
     std::cerr << script.file << ":" << c.line << ": " << c.label << ": " << p.message << "\n";
     throw ProbeFailed{};
   };
-  std::size_t errors = 0;
+  std::size_t errors = 0, calls = 0;
   try {
-    errors = runScript(script, *gl, hooks);
+    ScriptExecutor executor(*gl, hooks);
+    streamScript(text, script, [&](ScriptCommand&& c) {
+      if (c.kind == ScriptCommand::Kind::Call) ++calls;
+      executor.execute(c);
+    });
+    errors = executor.finish();
   } catch (const ProbeFailed&) {
     return 1;
   }
@@ -102,7 +112,7 @@ int runGl(const GlOptions& o) {
   }
   if (!o.quiet) {
     const PipelineCounters& c = gl->counters();
-    std::cout << script.file << ": " << script.callCount() << " calls, " << passes << " passes, "
+    std::cout << script.file << ": " << calls << " calls, " << passes << " passes, "
               << c.triangles << " triangles, " << c.fragmentsTested << " fragments tested, "
               << c.fragmentsWritten << " written, " << errors << " GL errors"
               << (probes ? ", " + std::to_string(probes) + " probes held" : "") << " (" << profile->name << ", "

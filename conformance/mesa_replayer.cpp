@@ -68,6 +68,12 @@ struct ContextDeleter {
 }  // namespace
 
 MesaReplay replayOnMesa(const Script& script, const std::string& driver) {
+  return replayOnMesa(script, driver, [&](const std::function<void(const ScriptCommand&)>& replay) {
+    for (const ScriptCommand& c : script.commands) replay(c);
+  });
+}
+
+MesaReplay replayOnMesa(const Script& script, const std::string& driver, const MesaCommandFeed& feed) {
   // Mesa reads GALLIUM_DRIVER when the context's screen is created.
   setenv("GALLIUM_DRIVER", driver.c_str(), 1);
   std::unique_ptr<osmesa_context, ContextDeleter> ctx(OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, nullptr));
@@ -81,21 +87,21 @@ MesaReplay replayOnMesa(const Script& script, const std::string& driver) {
   if (const GLubyte* r = glGetString(GL_RENDERER)) out.renderer = reinterpret_cast<const char*>(r);
   bool inBegin = false;
   MesaApi mesa;
-  for (const ScriptCommand& c : script.commands) {
+  feed([&](const ScriptCommand& c) {
     if (c.kind == ScriptCommand::Kind::Snapshot) {
       glFinish();
       out.snapshots.push_back(readBuffers(c.label, script.width, script.height));
-      continue;
+      return;
     }
     dispatch(mesa, c);
-    if (c.kind != ScriptCommand::Kind::Call) continue;
+    if (c.kind != ScriptCommand::Kind::Call) return;
     if (c.call == GLCall::Begin) inBegin = true;
     if (c.call == GLCall::End) inBegin = false;
     // glGetError is itself an error between glBegin and glEnd.
     if (!inBegin)
       for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
         out.glErrors.push_back(glErrorReport(c, e));
-  }
+  });
   if (mesa.usedWindowMap)
     out.glErrors.push_back("@window_map: the end-of-pipeline map is MPR's emulated stage, not GL; Mesa drew unmapped");
   glFinish();

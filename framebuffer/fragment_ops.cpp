@@ -4,12 +4,6 @@
 
 namespace mpr {
 
-std::uint8_t floatToUnorm8(float c) {
-  if (!(c > 0.0f)) return 0;  // also maps NaN to 0
-  if (c >= 1.0f) return 255;
-  return static_cast<std::uint8_t>(std::nearbyint(c * 255.0f));
-}
-
 FragmentFate processFragment(const FragmentState& s, Framebuffer& fb, const Fragment& f) {
   if (s.alpha.enabled && !compare(s.alpha.func, f.alpha, s.alpha.ref)) return FragmentFate::AlphaFailed;
 

@@ -4,6 +4,7 @@
 // stencil test, depth test, stencil update, blending, colour write mask.
 // Dithering is implementation-defined and not done (spec: scripts disable it).
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "framebuffer/blend.hpp"
@@ -45,7 +46,11 @@ struct Fragment {
 enum class FragmentFate : std::uint8_t { AlphaFailed, StencilFailed, DepthFailed, Written };
 
 // Float colour in [0, 1] to an 8-bit channel: clamp, scale, round to nearest even.
-std::uint8_t floatToUnorm8(float c);
+inline std::uint8_t floatToUnorm8(float c) {
+  if (!(c > 0.0f)) return 0;  // also maps NaN to 0
+  if (c >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(std::nearbyint(c * 255.0f));
+}
 
 FragmentFate processFragment(const FragmentState& s, Framebuffer& fb, const Fragment& f);
 

@@ -29,6 +29,13 @@ ClipVertex interpolate(const ClipVertex& in, const ClipVertex& out, float t) {
 
 }  // namespace
 
+bool insideAllPlanes(const std::array<ClipVertex, 3>& tri, const std::vector<ClipPlane>& planes) {
+  for (const ClipPlane& plane : planes)
+    for (const ClipVertex& v : tri)
+      if (!(distance(plane, v.clip) >= 0.0f)) return false;
+  return true;
+}
+
 std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> poly, const std::vector<ClipPlane>& planes) {
   std::vector<ClipVertex> next;
   std::vector<float> dist;

@@ -33,4 +33,8 @@ std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> poly, const std::vec
 // The fixed planes: near, far, left, right, bottom, top.
 const std::vector<ClipPlane>& viewVolumePlanes();
 
+// Whether every vertex lies inside every plane (distance >= 0, as
+// clipPolygon measures it): then clipPolygon returns the triangle unchanged.
+bool insideAllPlanes(const std::array<ClipVertex, 3>& tri, const std::vector<ClipPlane>& planes);
+
 }  // namespace mpr

@@ -17,6 +17,7 @@
 #include "framebuffer/accumulation.hpp"
 #include "framebuffer/clear.hpp"
 #include "framebuffer/fragment_ops.hpp"
+#include "framebuffer/fragment_pipeline.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "pipeline/clipping.hpp"
 #include "pipeline/fog.hpp"
@@ -261,6 +262,7 @@ class GLContext {
   ClearValues clearValues_;
   std::array<float, 4> clearAccumValue_{0, 0, 0, 0};
   FragmentState frag_;
+  FragmentFunction fragmentOp_ = nullptr;  // processFragment specialised for frag_, chosen per draw
 
   // rasterization state
   bool cullEnabled_ = false;

@@ -20,7 +20,12 @@ bool finite4(const Vec4& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
-Vec4 clampColor(const Vec4& c) { return glm::clamp(c, Vec4(0.0f), Vec4(1.0f)); }
+// glm::clamp(c, 0, 1) written out per component (glm's min and max are
+// std::min and std::max, NaN kept alike); glm's generic form is not inlined.
+[[gnu::always_inline]] inline Vec4 clampColor(const Vec4& c) {
+  auto clamp01 = [](float v) { return std::min(std::max(v, 0.0f), 1.0f); };
+  return Vec4(clamp01(c.x), clamp01(c.y), clamp01(c.z), clamp01(c.w));
+}
 
 }  // namespace
 
@@ -311,12 +316,17 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
                                static_cast<float>((depthFar_ - depthNear_) / 2.0),
                                static_cast<float>((depthNear_ + depthFar_) / 2.0), fb_.height()};
 
+  // The state cannot change within a draw: the per-fragment function is
+  // chosen once, and one set of llvmpipe planes is reused (no allocation per
+  // triangle once it has grown).
+  fragmentOp_ = chooseFragmentFunction(frag_);
+  LlvmpipeDepth depth{window, &userPlanes, {}};
   for (const AssembledTriangle& t : tris) {
     std::array<ClipVertex, 3> tri = {processed[t.v[0]], processed[t.v[1]], processed[t.v[2]]};
     if (flatShading_)
       for (ClipVertex& cv : tri)
         for (int i = 0; i < 8; ++i) cv.attr[i] = processed[t.provoking].attr[i];
-    LlvmpipeDepth depth{window, &userPlanes, {}};
+    depth.triangles.clear();
     // The end-of-pipeline stage interpolates depth itself (only the window
     // transform is used): no llvmpipe planes to set up.
     if (!windowMap_) depth.add(tri[0].clip, tri[1].clip, tri[2].clip);
@@ -331,6 +341,13 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const Llvmpip
     if (!finite4(v.clip)) return;
     for (float a : v.attr)
       if (!std::isfinite(a)) return;
+  }
+  // Inside every plane, clipPolygon would return the triangle as it is.
+  if (insideAllPlanes(tri, clipPlanesClip_)) {
+    for (const ClipVertex& v : tri)
+      if (!(v.clip.w > 0.0f)) return;
+    ++counters_.trianglesDrawn;
+    return rasterizeClippedTriangle(tri[0], tri[1], tri[2], depth);
   }
   std::vector<ClipVertex> poly(tri.begin(), tri.end());
   poly = clipPolygon(std::move(poly), clipPlanesClip_);
@@ -399,6 +416,7 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   const bool needColor = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] ||
                          frag_.colorMask[3] || frag_.alpha.enabled;
   const bool needDepth = frag_.depth.enabled;
+  const FragmentFunction fragmentOp = fragmentOp_;  // chosen by drawProcessed for this draw
 
   rasterizeTriangle(snapped, bounds, [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
     // Barycentric weights of the pixel centre.
@@ -447,14 +465,14 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     ++counters_.fragmentsTested;
     if (fragmentObserver) {
       FragmentEvent ev{x, y, fb_.stencil(x, y), 0, fb_.depth(x, y), f.depth, FragmentFate::Written, {}};
-      ev.fate = processFragment(frag_, fb_, f);
+      ev.fate = fragmentOp(frag_, fb_, f);
       ev.stencilAfter = fb_.stencil(x, y);
       ev.colorAfter = fb_.color(x, y);
       if (ev.fate == FragmentFate::Written) ++counters_.fragmentsWritten;
       fragmentObserver(ev);
       return;
     }
-    if (processFragment(frag_, fb_, f) == FragmentFate::Written) ++counters_.fragmentsWritten;
+    if (fragmentOp(frag_, fb_, f) == FragmentFate::Written) ++counters_.fragmentsWritten;
   });
 }
 

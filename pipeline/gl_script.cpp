@@ -5,14 +5,17 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
@@ -35,9 +38,13 @@ constexpr CallSpec kCalls[] = {
 };
 
 const CallSpec* findCall(std::string_view name) {
-  for (const CallSpec& c : kCalls)
-    if (c.name == name) return &c;
-  return nullptr;
+  static const std::unordered_map<std::string_view, const CallSpec*> byName = [] {
+    std::unordered_map<std::string_view, const CallSpec*> m;
+    for (const CallSpec& c : kCalls) m.emplace(c.name, &c);
+    return m;
+  }();
+  const auto it = byName.find(name);
+  return it == byName.end() ? nullptr : it->second;
 }
 
 // Capabilities and modes that GL accepts but the emulated Iris subset does not
@@ -81,13 +88,31 @@ std::vector<Token> tokenize(std::string_view line) {
 
 class Parser {
  public:
+  // How parse hands commands on: Store keeps them in the Script; Check keeps
+  // none (a first pass that finds every error); Stream hands each to the
+  // sink as soon as it is complete, probes placed in the window `streamSize`
+  // that the Check pass found.
+  enum class Mode { Store, Check, Stream };
+  using Sink = std::function<void(ScriptCommand&&)>;
+
   Parser(const std::string& file) : file_(file) {}
+  Parser(const std::string& file, Mode mode, Sink sink = {}, int streamWidth = 0, int streamHeight = 0)
+      : file_(file), mode_(mode), sink_(std::move(sink)), streamWidth_(streamWidth), streamHeight_(streamHeight) {}
 
   [[noreturn]] void fail(int line, int column, const std::string& message) const {
     throw ScriptError(file_, line, column, message);
   }
 
   std::optional<double> parseNumber(std::string_view t) const {
+    // A plain decimal ([-]digits[.digits][e[-]digits]) through from_chars:
+    // correctly rounded, as strtod is, so the same double; anything else
+    // (a sign '+', hex, a suffix, inf, out of range) takes strtod's path.
+    const bool plain = !t.empty() && t[0] != '+' && t.find_first_not_of("0123456789.-+eE") == std::string_view::npos;
+    if (plain) {
+      double v = 0.0;
+      const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v, std::chars_format::general);
+      if (ec == std::errc() && end == t.data() + t.size()) return v;
+    }
     std::string s(t);
     if (!s.empty() && (s.back() == 'f' || s.back() == 'F') && s.find_first_of("0123456789") != std::string::npos &&
         s.rfind("0x", 0) != 0 && s.rfind("-0x", 0) != 0 && s.rfind("+0x", 0) != 0)
@@ -123,27 +148,32 @@ class Parser {
     ScriptArg a;
     a.column = tok.column;
     a.text = std::string(tok.text);
-    const std::string where = "argument " + std::to_string(index + 1) + " of " + std::string(callName);
+    // Built only for a message: an argument that parses costs no string.
+    struct Where {
+      int index;
+      std::string_view callName;
+      operator std::string() const { return "argument " + std::to_string(index + 1) + " of " + std::string(callName); }
+    } const where{index, callName};
     const bool isName = tok.text.rfind("GL_", 0) == 0;
     if (isName && kind != 'b') {
       const auto v = glEnumValue(tok.text);
-      if (!v) fail(line, tok.column, "unknown GL enumerant '" + a.text + "' (" + where + ")");
+      if (!v) fail(line, tok.column, "unknown GL enumerant '" + a.text + "' (" + std::string(where) + ")");
       if (kind == 'z' && *v != GL_TRUE && *v != GL_FALSE)
-        fail(line, tok.column, where + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
-      if (kind == 'u') fail(line, tok.column, where + " is an unsigned byte (0..255), not " + a.text);
+        fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
+      if (kind == 'u') fail(line, tok.column, std::string(where) + " is an unsigned byte (0..255), not " + a.text);
       a.bits = *v;
       a.number = *v;
       return a;
     }
     switch (kind) {
       case 'e':
-        fail(line, tok.column, where + " is an enum: expected a GL_ name, got '" + a.text + "'");
+        fail(line, tok.column, std::string(where) + " is an enum: expected a GL_ name, got '" + a.text + "'");
       case 'b': {
         std::uint32_t bits = 0;
         if (!isName) {
           const auto n = parseInteger(tok.text);
           if (!n || *n < 0 || *n > 0xFFFFFFFFLL)
-            fail(line, tok.column, where + " is a bitfield: GL names joined by '|', got '" + a.text + "'");
+            fail(line, tok.column, std::string(where) + " is a bitfield: GL names joined by '|', got '" + a.text + "'");
           bits = static_cast<std::uint32_t>(*n);
         } else {
           size_t start = 0;
@@ -153,7 +183,7 @@ class Parser {
             const auto v = glEnumValue(part);
             if (!v)
               fail(line, tok.column + static_cast<int>(start),
-                   "unknown GL enumerant '" + std::string(part) + "' in bitfield (" + where + ")");
+                   "unknown GL enumerant '" + std::string(part) + "' in bitfield (" + std::string(where) + ")");
             bits |= *v;
             if (bar == std::string_view::npos) break;
             start = bar + 1;
@@ -167,20 +197,20 @@ class Parser {
       case 'u':
       case 'z': {
         const auto n = parseInteger(tok.text);
-        if (!n) fail(line, tok.column, where + " is an integer: expected a decimal or 0x literal, got '" + a.text + "'");
+        if (!n) fail(line, tok.column, std::string(where) + " is an integer: expected a decimal or 0x literal, got '" + a.text + "'");
         if (kind == 'u' && (*n < 0 || *n > 255))
-          fail(line, tok.column, where + " is an unsigned byte: " + a.text + " is outside 0..255");
+          fail(line, tok.column, std::string(where) + " is an unsigned byte: " + a.text + " is outside 0..255");
         if (kind == 'z' && *n != 0 && *n != 1)
-          fail(line, tok.column, where + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
+          fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
         if (*n < -2147483648LL || *n > 4294967295LL)
-          fail(line, tok.column, where + ": " + a.text + " does not fit in 32 bits");
+          fail(line, tok.column, std::string(where) + ": " + a.text + " does not fit in 32 bits");
         a.bits = static_cast<std::uint32_t>(*n);
         a.number = static_cast<double>(*n);
         return a;
       }
       default: {  // f, m, v
         const auto v = parseNumber(tok.text);
-        if (!v) fail(line, tok.column, where + " is a number: expected a C literal, got '" + a.text + "'");
+        if (!v) fail(line, tok.column, std::string(where) + " is a number: expected a C literal, got '" + a.text + "'");
         a.number = *v;
         return a;
       }
@@ -190,12 +220,16 @@ class Parser {
   Script parse(std::string_view text) {
     Script script;
     script.file = file_;
-    script.text = std::string(text);
+    if (mode_ == Mode::Store) script.text = std::string(text);
     bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false, inBegin = false;
     std::set<std::string> snapshots;
+    // A command a line at most: one allocation, not a growing copy of them all.
+    if (mode_ == Mode::Store)
+      script.commands.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
     // Probes are checked against the window once the whole script is read.
     std::vector<PendingProbe> probes;
     std::optional<PendingProbe> picture;  // an @expect-picture awaiting its @end
+    ScriptCommand pictureCommand;         // its command, held back until @end when streaming
     int lineNo = 0;
     size_t pos = 0;
     while (pos <= text.size()) {
@@ -216,7 +250,13 @@ class Parser {
           if (toks.size() != 1) fail(lineNo, toks[1].column, "@end takes nothing");
           if (picture->probe->cells.empty()) fail(lineNo, head.column, "@expect-picture has no rows before @end");
           finishPicture(*picture);
-          probes.push_back(std::move(*picture));
+          if (mode_ == Mode::Stream) {
+            placeProbe(*picture, streamWidth_, streamHeight_);
+            pictureCommand.probe = std::move(picture->probe);
+            emit(script, std::move(pictureCommand));
+          } else {
+            probes.push_back(std::move(*picture));
+          }
           picture.reset();
         } else {
           addPictureRow(*picture, toks, lineNo);
@@ -232,7 +272,14 @@ class Parser {
         cmd.line = lineNo;
         cmd.label = std::string(line.substr(static_cast<size_t>(head.column - 1),
                                             static_cast<size_t>(toks.back().column - head.column) + toks.back().text.size()));
-        script.commands.push_back(std::move(cmd));
+        if (mode_ == Mode::Stream && head.text == "@expect") {
+          placeProbe(pp, streamWidth_, streamHeight_);
+          cmd.probe = std::move(pp.probe);
+          emit(script, std::move(cmd));
+          continue;
+        }
+        if (mode_ == Mode::Stream) pictureCommand = std::move(cmd);  // handed on at its @end
+        else emit(script, std::move(cmd));
         if (head.text == "@expect") probes.push_back(std::move(pp));
         else picture = std::move(pp);
         continue;
@@ -275,7 +322,7 @@ class Parser {
           const size_t from = static_cast<size_t>(toks[1].column - 1);
           const Token& last = toks.back();
           cmd.label = std::string(line.substr(from, static_cast<size_t>(last.column - 1) + last.text.size() - from));
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         if (head.text == "@snapshot") {
@@ -288,21 +335,21 @@ class Parser {
           if (!snapshots.insert(name).second) fail(lineNo, toks[1].column, "snapshot '" + name + "' is taken twice");
           cmd.kind = ScriptCommand::Kind::Snapshot;
           cmd.label = name;
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         if (head.text == "@window_map") {
           // docs/gl-script-directives.md: 9 numbers (column by column) or off.
           cmd.kind = ScriptCommand::Kind::WindowMap;
           if (toks.size() == 2 && toks[1].text == "off") {
-            script.commands.push_back(std::move(cmd));
+            emit(script, std::move(cmd));
             continue;
           }
           if (toks.size() != 10)
             fail(lineNo, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
           for (std::size_t t = 1; t < toks.size(); ++t)
             cmd.args.push_back(parseArg('f', toks[t], lineNo, "@window_map", static_cast<int>(t - 1)));
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         if (head.text == "@count_fragments") {
@@ -314,7 +361,7 @@ class Parser {
           counting = begin;
           cmd.kind = ScriptCommand::Kind::FragmentCount;
           cmd.label = std::string(toks[1].text);
-          script.commands.push_back(std::move(cmd));
+          emit(script, std::move(cmd));
           continue;
         }
         fail(lineNo, head.column, "unknown directive '" + std::string(head.text) +
@@ -369,12 +416,12 @@ class Parser {
       checkSubset(*spec, cmd, lineNo);
       if (cmd.call == GLCall::Begin) inBegin = true;
       if (cmd.call == GLCall::End) inBegin = false;
-      script.commands.push_back(std::move(cmd));
+      emit(script, std::move(cmd));
     }
     if (picture) fail(picture->line, picture->column, "@expect-picture without @end");
     for (PendingProbe& pp : probes) {
       placeProbe(pp, script.width, script.height);
-      script.commands[pp.command].probe = std::move(pp.probe);
+      if (mode_ == Mode::Store) script.commands[pp.command].probe = std::move(pp.probe);
     }
     return script;
   }
@@ -557,7 +604,15 @@ class Parser {
   }
 
  private:
+  void emit(Script& script, ScriptCommand&& cmd) const {
+    if (mode_ == Mode::Store) script.commands.push_back(std::move(cmd));
+    else if (mode_ == Mode::Stream) sink_(std::move(cmd));
+  }
+
   std::string file_;
+  Mode mode_ = Mode::Store;
+  Sink sink_;
+  int streamWidth_ = 0, streamHeight_ = 0;
 };
 
 }  // namespace
@@ -611,14 +666,22 @@ std::size_t Script::probeCount() const {
 
 Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }
 
-Script loadScript(const std::string& path) {
-  std::string text;
+Script checkScript(std::string_view text, const std::string& file) {
+  return Parser(file, Parser::Mode::Check).parse(text);
+}
+
+void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
+  Parser(header.file, Parser::Mode::Stream, sink, header.width, header.height).parse(text);
+}
+
+std::string readScriptText(const std::string& path) {
   try {
-    text = readInputFile(path, kMaxScriptBytes, "the script");
+    return readInputFile(path, kMaxScriptBytes, "the script");
   } catch (const std::runtime_error& e) {
     throw ScriptError(path, 0, 0, e.what());
   }
-  return parseScript(text, path);
 }
+
+Script loadScript(const std::string& path) { return parseScript(readScriptText(path), path); }
 
 }  // namespace mpr

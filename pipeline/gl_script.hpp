@@ -3,6 +3,7 @@
 // commands. Parsing is complete before anything runs, so a script error stops
 // the run before a single buffer is touched or a file written.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -68,5 +69,17 @@ Script parseScript(std::string_view text, const std::string& file);
 // times the trace of the bathroom scene's 2.85 M calls.
 inline constexpr std::uint64_t kMaxScriptBytes = std::uint64_t{1} << 30;
 Script loadScript(const std::string& path);
+// The text of a script file, read within kMaxScriptBytes; ScriptError at 0:0 when unreadable.
+std::string readScriptText(const std::string& path);
+
+// A script executed as it is read, in two passes over its text: checkScript
+// parses all of it and throws the first ScriptError, keeping no command (the
+// Script it returns holds file, size and profile, no commands); streamScript
+// then parses it again and hands each command to `sink` as soon as it is
+// complete (a probe with its pixels placed, an @expect-picture at its @end).
+// The commands and their order are parseScript's; memory does not grow with
+// the script's length.
+Script checkScript(std::string_view text, const std::string& file);
+void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
 
 }  // namespace mpr

@@ -38,43 +38,52 @@ void executeCall(GLContext& gl, const ScriptCommand& cmd) {
   dispatch(emulator, cmd);
 }
 
-std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& hooks, std::size_t commands) {
-  std::size_t errors = 0;
-  GLEmulator emulator(gl);
-  for (std::size_t i = 0; i < script.commands.size() && i < commands; ++i) {
-    const ScriptCommand& cmd = script.commands[i];
-    // glBegin of another mode closes the quad draw but is no flush of the
-    // vbo (its vertex format stays).
-    if (cmd.kind == ScriptCommand::Kind::Call && cmd.call == GLCall::Begin) gl.closeQuadDraw();
-    else if (!mayJoinQuadDraw(cmd)) gl.flushVertices();
-    switch (cmd.kind) {
-      case ScriptCommand::Kind::WindowMap:
-      case ScriptCommand::Kind::FragmentCount:
-        dispatch(emulator, cmd);
-        break;
-      case ScriptCommand::Kind::Pass:
-        if (hooks.onPass) hooks.onPass(cmd);
-        break;
-      case ScriptCommand::Kind::Snapshot:
-        if (hooks.onSnapshot) hooks.onSnapshot(cmd, gl);
-        break;
-      case ScriptCommand::Kind::Probe:
-        if (hooks.onProbe) hooks.onProbe(cmd, gl);
-        break;
-      case ScriptCommand::Kind::Call: {
-        if (hooks.beforeCall) hooks.beforeCall(cmd);
-        dispatch(emulator, cmd);
-        const std::uint32_t e = gl.getError();
-        if (e != GL_NO_ERROR) {
-          ++errors;
-          if (hooks.onGLError) hooks.onGLError(cmd, e);
-        }
-        break;
+ScriptExecutor::ScriptExecutor(GLContext& gl, const ScriptHooks& hooks)
+    : gl_(gl), hooks_(hooks), emulator_(std::make_unique<GLEmulator>(gl)) {}
+
+ScriptExecutor::~ScriptExecutor() = default;
+
+void ScriptExecutor::execute(const ScriptCommand& cmd) {
+  // glBegin of another mode closes the quad draw but is no flush of the
+  // vbo (its vertex format stays).
+  if (cmd.kind == ScriptCommand::Kind::Call && cmd.call == GLCall::Begin) gl_.closeQuadDraw();
+  else if (!mayJoinQuadDraw(cmd)) gl_.flushVertices();
+  switch (cmd.kind) {
+    case ScriptCommand::Kind::WindowMap:
+    case ScriptCommand::Kind::FragmentCount:
+      dispatch(*emulator_, cmd);
+      break;
+    case ScriptCommand::Kind::Pass:
+      if (hooks_.onPass) hooks_.onPass(cmd);
+      break;
+    case ScriptCommand::Kind::Snapshot:
+      if (hooks_.onSnapshot) hooks_.onSnapshot(cmd, gl_);
+      break;
+    case ScriptCommand::Kind::Probe:
+      if (hooks_.onProbe) hooks_.onProbe(cmd, gl_);
+      break;
+    case ScriptCommand::Kind::Call: {
+      if (hooks_.beforeCall) hooks_.beforeCall(cmd);
+      dispatch(*emulator_, cmd);
+      const std::uint32_t e = gl_.getError();
+      if (e != GL_NO_ERROR) {
+        ++errors_;
+        if (hooks_.onGLError) hooks_.onGLError(cmd, e);
       }
+      break;
     }
   }
-  gl.flushVertices();
-  return errors;
+}
+
+std::size_t ScriptExecutor::finish() {
+  gl_.flushVertices();
+  return errors_;
+}
+
+std::size_t runScript(const Script& script, GLContext& gl, const ScriptHooks& hooks, std::size_t commands) {
+  ScriptExecutor executor(gl, hooks);
+  for (std::size_t i = 0; i < script.commands.size() && i < commands; ++i) executor.execute(script.commands[i]);
+  return executor.finish();
 }
 
 }  // namespace mpr

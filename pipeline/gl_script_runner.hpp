@@ -3,6 +3,7 @@
 // errors, pass boundaries and snapshot points to the caller.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "pipeline/gl_context.hpp"
@@ -25,6 +26,25 @@ std::string glErrorReport(const ScriptCommand& call, std::uint32_t error);
 
 // One call or directive on the context (no error reporting).
 void executeCall(GLContext& gl, const ScriptCommand& call);
+
+class GLEmulator;
+
+// Executes commands one at a time, as runScript does (for a streamed script,
+// see streamScript): execute each in order, then finish once.
+class ScriptExecutor {
+ public:
+  ScriptExecutor(GLContext& gl, const ScriptHooks& hooks);
+  ~ScriptExecutor();
+  void execute(const ScriptCommand& cmd);
+  // Closes an open draw; returns the number of GL errors raised.
+  std::size_t finish();
+
+ private:
+  GLContext& gl_;
+  const ScriptHooks& hooks_;
+  std::unique_ptr<GLEmulator> emulator_;
+  std::size_t errors_ = 0;
+};
 
 // Runs every command; returns the number of GL errors raised. `commands`
 // limits the run to the first so many (a pixel's history up to a probe).

@@ -133,6 +133,11 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
   t.dzdy = dz20 * dx01ooa - dz01 * dx20ooa;
   t.a0 = p0.z - (t.dzdx * (p0.x - 0.5f) + t.dzdy * (p0.y - 0.5f));
   t.v = {p0, p1, p2};
+  for (int i = 0; i < 3; ++i) {
+    const LlWindow& a = t.v[i];
+    const LlWindow& b = t.v[(i + 1) % 3];
+    t.edgeLength[i] = std::hypot(static_cast<double>(b.x) - a.x, static_cast<double>(b.y) - a.y);
+  }
   triangles.push_back(t);
 }
 
@@ -145,7 +150,7 @@ const LlvmpipeDepth::Triangle& LlvmpipeDepth::containing(double px, double py) c
       const LlWindow& a = t.v[i];
       const LlWindow& b = t.v[(i + 1) % 3];
       const double ex = static_cast<double>(b.x) - a.x, ey = static_cast<double>(b.y) - a.y;
-      const double length = std::hypot(ex, ey);
+      const double length = t.edgeLength[i];
       if (length > 0.0) nearest = std::min(nearest, (ex * (a.y - py) - ey * (a.x - px)) / length);
     }
     if (nearest > bestDistance) {

@@ -62,6 +62,7 @@ struct LlvmpipeDepth {
   struct Triangle {
     float a0, dzdx, dzdy;
     std::array<LlWindow, 3> v;  // in the order set up, counter-clockwise in y-down space
+    std::array<double, 3> edgeLength;  // |v[i+1] - v[i]|, for containing (set up once, not per pixel)
   };
 
   WindowTransform window;

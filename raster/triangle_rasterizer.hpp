@@ -88,18 +88,26 @@ void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBound
     e[i].bias = ownsTies(dx, dy) ? 0 : 1;
   }
 
+  // Each row's covered pixels are one span (the triangle is convex): its
+  // ends are solved from the edge functions in exact integer arithmetic, so
+  // the span holds exactly the pixels a test of every pixel would pass, and
+  // the weights handed on are the same integers.
+  const std::int64_t width = px1 - px0;
   for (std::int64_t py = py0; py <= py1; ++py) {
-    std::int64_t w0 = e[0].rowStart, w1 = e[1].rowStart, w2 = e[2].rowStart;
-    for (std::int64_t px = px0; px <= px1; ++px) {
-      if (((w0 - e[0].bias) | (w1 - e[1].bias) | (w2 - e[2].bias)) >= 0) {
-        if (swapped)
-          emit(static_cast<int>(px), static_cast<int>(py), w0, w2, w1);
-        else
-          emit(static_cast<int>(px), static_cast<int>(py), w0, w1, w2);
-      }
-      w0 += e[0].stepX;
-      w1 += e[1].stepX;
-      w2 += e[2].stepX;
+    std::int64_t k0 = 0, k1 = width;  // the span, as offsets from px0
+    for (int i = 0; i < 3 && k0 <= k1; ++i) {
+      const std::int64_t slack = e[i].rowStart - e[i].bias;  // E - bias at px0; covered where >= 0
+      if (e[i].stepX > 0) k0 = std::max(k0, slack >= 0 ? 0 : (-slack + e[i].stepX - 1) / e[i].stepX);
+      else if (e[i].stepX < 0) k1 = slack < 0 ? -1 : std::min(k1, slack / -e[i].stepX);
+      else if (slack < 0) k1 = -1;
+    }
+    for (std::int64_t k = k0; k <= k1; ++k) {
+      const std::int64_t w0 = e[0].rowStart + k * e[0].stepX, w1 = e[1].rowStart + k * e[1].stepX,
+                         w2 = e[2].rowStart + k * e[2].stepX;
+      if (swapped)
+        emit(static_cast<int>(px0 + k), static_cast<int>(py), w0, w2, w1);
+      else
+        emit(static_cast<int>(px0 + k), static_cast<int>(py), w0, w1, w2);
     }
     e[0].rowStart += e[0].stepY;
     e[1].rowStart += e[1].stepY;

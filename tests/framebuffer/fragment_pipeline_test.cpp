@@ -1,0 +1,80 @@
+// chooseFragmentFunction's variants against processFragment: for every
+// combination of alpha test, stencil test, depth test, blending and colour
+// write mask (none, all, each single channel), random fragments on random
+// buffers must leave the same fate, colour, depth and stencil, byte for byte.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "framebuffer/fragment_ops.hpp"
+#include "framebuffer/fragment_pipeline.hpp"
+#include "framebuffer/framebuffer.hpp"
+#include "framebuffer/profile.hpp"
+
+namespace mpr {
+namespace {
+
+constexpr int kSize = 8;
+
+void fillRandom(Framebuffer& fb, std::mt19937& rng) {
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      fb.stencil(x, y) = static_cast<std::uint8_t>(rng() & 0xFF);
+      fb.depth(x, y) = rng() & 0xFFFFFF;
+      for (int c = 0; c < 4; ++c) fb.color(x, y)[c] = static_cast<std::uint8_t>(rng() & 0xFF);
+    }
+}
+
+TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
+  std::mt19937 rng(14);
+  const std::array<std::array<bool, 4>, 6> masks = {{{false, false, false, false},
+                                                     {true, true, true, true},
+                                                     {true, false, false, false},
+                                                     {false, true, false, false},
+                                                     {false, false, true, false},
+                                                     {false, false, false, true}}};
+  int variants = 0;
+  for (int bits = 0; bits < 16; ++bits)
+    for (const auto& mask : masks) {
+      FragmentState s;
+      s.alpha = {(bits & 1) != 0, CompareFunc::Gequal, 0.5f};
+      s.stencil.enabled = (bits & 2) != 0;
+      s.depth.enabled = (bits & 4) != 0;
+      s.blend = {(bits & 8) != 0, BlendFactor::SrcAlpha, BlendFactor::OneMinusDstColor};
+      s.colorMask = mask;
+      const FragmentFunction op = chooseFragmentFunction(s);
+      ++variants;
+      for (int trial = 0; trial < 200; ++trial) {
+        // A fresh random state of the tests for each fragment.
+        s.stencil.func = static_cast<CompareFunc>(rng() % 8);
+        s.stencil.ref = rng() & 0xFF;
+        s.stencil.valueMask = rng() & 0xFF;
+        s.stencil.writeMask = rng() & 0xFF;
+        s.stencil.sfail = static_cast<StencilOp>(rng() % 8);
+        s.stencil.dpfail = static_cast<StencilOp>(rng() % 8);
+        s.stencil.dppass = static_cast<StencilOp>(rng() % 8);
+        s.depth.func = static_cast<CompareFunc>(rng() % 8);
+        s.depth.writeMask = (rng() & 1) != 0;
+        Framebuffer expected(kSize, kSize, mesaProfile()), found(kSize, kSize, mesaProfile());
+        std::mt19937 fill(static_cast<unsigned>(trial));
+        fillRandom(expected, fill);
+        fill.seed(static_cast<unsigned>(trial));
+        fillRandom(found, fill);
+        const Fragment f{static_cast<int>(rng() % kSize), static_cast<int>(rng() % kSize),
+                         static_cast<std::uint32_t>(rng() & 0xFFFFFF),
+                         Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                               static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())},
+                         static_cast<float>(rng() % 256) / 255.0f};
+        const FragmentFate want = processFragment(s, expected, f);
+        const FragmentFate got = op(s, found, f);
+        ASSERT_EQ(got, want) << "variant " << bits << " trial " << trial;
+        ASSERT_EQ(found.colorData(), expected.colorData()) << "variant " << bits << " trial " << trial;
+        ASSERT_EQ(found.depthData(), expected.depthData()) << "variant " << bits << " trial " << trial;
+        ASSERT_EQ(found.stencilData(), expected.stencilData()) << "variant " << bits << " trial " << trial;
+      }
+    }
+  EXPECT_EQ(variants, 96);
+}
+
+}  // namespace
+}  // namespace mpr
