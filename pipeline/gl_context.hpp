@@ -232,6 +232,9 @@ class GLContext {
   void setCurrentColor(const Vec4& c);
   void drawQuadsPiece(std::vector<ClipVertex> piece);      // one GL_QUADS draw piece
   void drawQuadStripPiece(const std::vector<ClipVertex>& piece);
+  // Whether any of the first `count` vertices lies outside a plane of the
+  // draw module (its clip mask), which makes it run its pipeline.
+  bool anyOutsideDrawPlanes(const std::vector<ClipVertex>& processed, std::size_t count) const;
 
   void setError(GLenumValue e);
   bool checkOutsideBeginEnd();
@@ -303,6 +306,8 @@ class GLContext {
   Mat4 mvp_;
   glm::mat3 normalMatrix_;
   std::vector<ClipPlane> clipPlanesClip_;
+  std::vector<ClipPlane> userPlanesClip_;  // clipPlanesClip_'s user planes (after the six of the view volume)
+  bool mesaShininessZero_ = false;         // the shininess0_attenuated departure applies to this draw
   std::optional<glm::mat3> windowMap_;
   unsigned departures_ = 0;  // MesaDeparture bits
 };

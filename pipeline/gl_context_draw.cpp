@@ -139,14 +139,7 @@ ClipVertex GLContext::processVertex(const Vertex& v) const {
   if (lightingEnabled_) {
     LightingState s = lighting_;
     s.material = blockMaterials_[v.material];
-    if (departures_ & kShininess0Attenuated) {
-      // ffvertex_prog.c make_state_key: shininess zero on the front (and the
-      // back when two-sided) for the whole draw.
-      bool zero = true;
-      for (const auto& materials : blockMaterials_)
-        zero = zero && materials[0].shininess == 0.0f && (!s.model.twoSide || materials[1].shininess == 0.0f);
-      s.mesaShininess0Attenuated = zero;
-    }
+    s.mesaShininess0Attenuated = mesaShininessZero_;
     if (colorMaterialEnabled_) {
       // The vertex's own colour feeds the tracked material parameter.
       const Vec4 c = v.color;
@@ -196,6 +189,17 @@ void GLContext::end() {
   const Mat4 projInverse = mesaInverse(projection_.top());
   for (int i = 0; i < 6; ++i)
     if (clipPlaneEnabled_[i]) clipPlanesClip_.push_back(mesaTransformRowVector(clipPlanesEye_[i], projInverse));
+  userPlanesClip_.assign(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
+  // ffvertex_prog.c make_state_key (the shininess0_attenuated departure):
+  // shininess zero on the front, and on the back when two-sided, for the
+  // whole draw.
+  mesaShininessZero_ = false;
+  if (departures_ & kShininess0Attenuated) {
+    mesaShininessZero_ = true;
+    for (const auto& materials : blockMaterials_)
+      mesaShininessZero_ = mesaShininessZero_ && materials[0].shininess == 0.0f &&
+                           (!lighting_.model.twoSide || materials[1].shininess == 0.0f);
+  }
   if (windowMap_) {
     // The end-of-pipeline map: what lands in the viewport is |u| <= q and
     // |v| <= q (so q >= 0), which is linear in clip coordinates (u w is
@@ -241,21 +245,22 @@ void GLContext::end() {
   drawQuadsPiece(std::move(processed));
 }
 
+bool GLContext::anyOutsideDrawPlanes(const std::vector<ClipVertex>& processed, std::size_t count) const {
+  for (std::size_t i = 0; i < count; ++i)
+    if (drawClipMask(processed[i].clip, userPlanesClip_) != 0) return true;
+  return false;
+}
+
 void GLContext::drawQuadStripPiece(const std::vector<ClipVertex>& processed) {
-  {
-    // A quad strip is (2, 0, 3) then (0, 1, 3) per quad through the draw
-    // module's pipeline (draw_decompose_tmp.h, QUAD(2, 0, 1, 3)), which runs
-    // when any vertex lies outside a clip plane; otherwise llvmpipe's setup
-    // (lp_setup_vbuf.c) draws the same two triangles in the other order,
-    // (0, 1, 3) first, which decides the pixels where a quad overlaps itself.
-    const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
-    // The vbo trims the strip to an even count first: a last odd vertex
-    // takes no part in the decision.
-    bool anyOutside = false;
-    for (std::size_t i = 0; i < (processed.size() & ~std::size_t{1}); ++i)
-      anyOutside = anyOutside || drawClipMask(processed[i].clip, userPlanes) != 0;
-    return drawProcessed(PrimitiveType::QuadStrip, processed, false, !anyOutside);
-  }
+  // A quad strip is (2, 0, 3) then (0, 1, 3) per quad through the draw
+  // module's pipeline (draw_decompose_tmp.h, QUAD(2, 0, 1, 3)), which runs
+  // when any vertex lies outside a clip plane; otherwise llvmpipe's setup
+  // (lp_setup_vbuf.c) draws the same two triangles in the other order,
+  // (0, 1, 3) first, which decides the pixels where a quad overlaps itself.
+  // The vbo trims the strip to an even count first: a last odd vertex takes
+  // no part in the decision.
+  const bool anyOutside = anyOutsideDrawPlanes(processed, processed.size() & ~std::size_t{1});
+  drawProcessed(PrimitiveType::QuadStrip, processed, false, !anyOutside);
 }
 
 void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
@@ -277,12 +282,9 @@ void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
   // a multiple of 4; vbo_merge_draws), so the split of a block can depend on
   // a later one: blocks wait in quadDraw_ until the draw is known to clip or
   // is closed.
-  const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
   // As for strips, the draw is trimmed to whole quads first (draw_pt.c
   // draw_pt_trim_count): vertices after the last whole quad take no part.
-  bool anyOutside = false;
-  for (std::size_t i = 0; i < (processed.size() & ~std::size_t{3}); ++i)
-    anyOutside = anyOutside || drawClipMask(processed[i].clip, userPlanes) != 0;
+  const bool anyOutside = anyOutsideDrawPlanes(processed, processed.size() & ~std::size_t{3});
   if (!quadDraw_.open || quadDraw_.vertexCount % 4 != 0) {
     closeQuadDraw();
     quadDraw_ = OpenQuadDraw{true, false, 0, {}};
@@ -311,7 +313,7 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
       tris[k] = {{q, q + 1, q + 3}, q + 3};
       tris[k + 1] = {{q + 1, q + 2, q + 3}, q + 3};
     }
-  const std::vector<ClipPlane> userPlanes(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
+  const std::vector<ClipPlane>& userPlanes = userPlanesClip_;
   const WindowTransform window{vpScaleX_, vpTransX_, vpScaleY_, vpTransY_,
                                static_cast<float>((depthFar_ - depthNear_) / 2.0),
                                static_cast<float>((depthNear_ + depthFar_) / 2.0), fb_.height()};
