@@ -124,13 +124,18 @@ class WindowRenderer {
     for (const ReflectedLight& rl : refLights_) {
       if (rl.light != light) continue;
       any = true;
-      const RefFace& face = faces_[static_cast<std::size_t>(rl.face)];
-      path_.push_back("draw_ref_shadows > face " + std::to_string(rl.face) + " \"" +
-                      s_.objects[static_cast<std::size_t>(face.object)].name + "\"");
-      pass("light volume", "light volume | face_light_stencil(ref_face)");
-      apply_to_screen(gl_, {GL_LEQUAL, lv_.shadMin, lv_.shadMin, lv_.max, GL_INCR});
+      path_.push_back("draw_ref_shadows > " + pathText(rl));
+      // A path of k faces: every shadow value raised by k, each constituent
+      // light volume counted inverted; only inside all k is SHAD_ZERO again
+      // (1997 §4.2, "stenciling each of the constituent light volumes").
+      pass("light volume", rl.path.size() == 1 ? "light volume | face_light_stencil(ref_face)"
+                                               : "light volume | face_light_stencil(every face of the light path)");
+      for (std::size_t i = 0; i < rl.lightVolumes.size(); ++i)
+        apply_to_screen(gl_, {GL_LEQUAL, lv_.shadMin, lv_.shadMin, lv_.max, GL_INCR});
       gl_scene_.setupView(cam);
-      countVolumes(gl_, {&rl.lightVolume}, cam, s_.camera, gl_scene_.aspect(), lv_, true, true);
+      std::vector<const VolumeGeometry*> lightVolumes;
+      for (const VolumeGeometry& v : rl.lightVolumes) lightVolumes.push_back(&v);
+      countVolumes(gl_, lightVolumes, cam, s_.camera, gl_scene_.aspect(), lv_, true, true);
       pass("shadow volume",
            "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT, ref_face)");
       ++counts_.shadowPasses;
@@ -144,6 +149,15 @@ class WindowRenderer {
       path_.pop_back();
     }
     return any;
+  }
+
+  // The faces a virtual light's path passed: face N "name" > face M "name".
+  std::string pathText(const ReflectedLight& rl) const {
+    std::string t;
+    for (const int f : rl.path)
+      t += (t.empty() ? "face " : " > face ") + std::to_string(f) + " \"" +
+           s_.objects[static_cast<std::size_t>(faces_[static_cast<std::size_t>(f)].object)].name + "\"";
+    return t;
   }
 
   // ---- draw_all_shadows() -------------------------------------------------

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "algorithms/light_path.hpp"
 #include "algorithms/shadow_geometry.hpp"
 #include "scene/slab_refraction.hpp"
 
@@ -46,13 +47,6 @@ DVec3 transferThroughFace(const RefFace& f, DVec3 light, DVec3 ref, DVec3 p) {
   return p + (ref - light) * (f.side(p) / f.side(light));
 }
 
-int reflectedLightCount(const Scene& scene, const std::vector<RefFace>& faces) {
-  int n = 0;
-  for (const PointLight& l : scene.lights)
-    for (const RefFace& f : faces) n += refLightPosition(f, DVec3(l.position)).has_value();
-  return n;
-}
-
 namespace {
 
 // The face as a one-polygon object wound to face `towards` (a light volume is
@@ -71,6 +65,31 @@ SceneObject faceFacing(const RefFace& f, const std::string& name, DVec3 towards,
   return face;
 }
 
+// The polygon `poly` (double, any winding) as a one-polygon object wound to
+// face `towards`.
+SceneObject polygonFacing(const std::vector<DVec3>& poly, const std::string& name, DVec3 towards) {
+  std::vector<Vec3> corners;
+  for (const DVec3& p : poly) corners.push_back(Vec3(p));
+  const Plane plane = planeOfPolygon(corners);
+  const bool reverse = plane.signedDistance(towards) < 0.0;
+  SceneObject face;
+  face.name = name;
+  const std::size_t k = corners.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    face.mesh.positions.push_back(corners[reverse ? k - 1 - i : i]);
+    face.mesh.normals.push_back(Vec3(reverse ? -plane.normal : plane.normal));
+  }
+  for (std::uint32_t i = 1; i + 1 < k; ++i) face.mesh.triangles.push_back({0, i, i + 1});
+  return face;
+}
+
+// The side of the face's plane the light from `light` goes on to: a
+// mirror's light stays on the light's side, a refracting face's crosses.
+double outgoingSide(const RefFace& f, DVec3 light) {
+  const double lightSide = f.side(light) > 0.0 ? 1.0 : -1.0;
+  return f.kind == MaterialKind::Mirror ? lightSide : -lightSide;
+}
+
 // Every vertex strictly on the side `sign` of the face's plane.
 bool whollyOnSide(const Mesh& mesh, const RefFace& f, double sign) {
   if (mesh.positions.empty()) return false;
@@ -84,54 +103,78 @@ bool whollyOnSide(const Mesh& mesh, const RefFace& f, double sign) {
 std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces) {
   std::vector<ReflectedLight> out;
   const BoundingSphere bounds = sceneBoundingSphere(scene);
-  for (std::size_t l = 0; l < scene.lights.size(); ++l)
-    for (std::size_t fi = 0; fi < faces.size(); ++fi) {
-      const RefFace& f = faces[fi];
-      const PointLight& light = scene.lights[l];
-      const DVec3 lightPos(light.position);
-      const std::optional<DVec3> ref = refLightPosition(f, lightPos);
-      if (!ref) continue;
-      ReflectedLight r;
-      r.light = static_cast<int>(l);
-      r.face = static_cast<int>(fi);
-      r.virtualLight = light;
-      r.virtualLight.position = Vec3(*ref);
-      const SceneObject& specular = scene.objects[static_cast<std::size_t>(f.object)];
-      const SceneMaterial& m = scene.materials[static_cast<std::size_t>(specular.material)];
-      r.virtualLight.color = light.color * (f.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance);
-      const DVec3 shift = f.refracts() && f.thickness > 0.0 ? *ref - lightPos : DVec3(0.0);
-      r.lightVolume = objectShadowVolume(faceFacing(f, specular.name + " (light volume)", *ref, shift),
-                                         r.virtualLight.position, bounds);
-      // The light's side of the plane, and the side its light goes on to.
-      const double lightSide = f.side(lightPos) > 0.0 ? 1.0 : -1.0;
-      const double volumeSide = f.kind == MaterialKind::Mirror ? lightSide : -lightSide;
-      for (const SceneObject& o : scene.objects) {
-        if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render))
-          continue;
-        // CAN'T_INTERSECT: the object stands where the light goes on.
-        if (whollyOnSide(o.mesh, f, volumeSide)) {
-          VolumeGeometry v = objectShadowVolume(o, r.virtualLight.position, bounds);
-          if (!v.volume.empty()) r.shadows.push_back(std::move(v));
-        }
-        // MUST_INTERSECT: between the light and the face, its shadow falls
-        // on the face and is passed on: the volume, from the virtual light,
-        // of the object carried through the face (a mirror's: its mirror
-        // image behind the face). The carried object is not drawn, so
-        // nothing hides its light cap: counted by z-fail.
-        if (whollyOnSide(o.mesh, f, lightSide) && shadowCrossesFace(o.mesh, f.polygon, light.position)) {
-          SceneObject image = o;
-          image.name = o.name + (f.kind == MaterialKind::Mirror ? " (mirror image)" : " (through the face)");
-          for (Vec3& p : image.mesh.positions) p = Vec3(transferThroughFace(f, lightPos, *ref, DVec3(p)));
-          if (f.kind == MaterialKind::Mirror)
-            for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
-          VolumeGeometry v = objectShadowVolume(image, r.virtualLight.position, bounds);
-          v.alwaysZFail = true;
-          if (!v.volume.empty()) r.shadows.push_back(std::move(v));
-        }
-      }
-      out.push_back(std::move(r));
+  for (const LightPath& path : lightPaths(scene, faces, lightBounces(scene.render), kMaxLightPaths)) {
+    const std::size_t k = path.faces.size();
+    const RefFace& f = faces[static_cast<std::size_t>(path.faces.back())];
+    const PointLight& light = scene.lights[static_cast<std::size_t>(path.light)];
+    const DVec3 ref = path.virtualLight();
+    ReflectedLight r;
+    r.light = path.light;
+    r.face = path.faces.back();
+    r.path = path.faces;
+    r.virtualLight = light;
+    r.virtualLight.position = Vec3(ref);
+    // The light passed on by every face of the path.
+    for (const int fi : path.faces) {
+      const RefFace& pf = faces[static_cast<std::size_t>(fi)];
+      const SceneMaterial& m =
+          scene.materials[static_cast<std::size_t>(scene.objects[static_cast<std::size_t>(pf.object)].material)];
+      r.virtualLight.color *= pf.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
     }
+    const SceneObject& specular = scene.objects[static_cast<std::size_t>(f.object)];
+    // The constituent light volumes (1997 §4.2): the earlier faces carried
+    // into this light's space, then the last face (a slab's shifted).
+    for (std::size_t i = 0; i + 1 < k; ++i) {
+      const std::string& name = scene.objects[static_cast<std::size_t>(
+          faces[static_cast<std::size_t>(path.faces[i])].object)].name;
+      r.lightVolumes.push_back(objectShadowVolume(
+          polygonFacing(path.apertures[i], name + " (light volume, carried)", ref), r.virtualLight.position, bounds));
+    }
+    const DVec3 shift = f.refracts() && f.thickness > 0.0 ? ref - path.lights[k - 1] : DVec3(0.0);
+    r.lightVolumes.push_back(objectShadowVolume(faceFacing(f, specular.name + " (light volume)", ref, shift),
+                                                r.virtualLight.position, bounds));
+    for (const SceneObject& o : scene.objects) {
+      if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render))
+        continue;
+      // CAN'T_INTERSECT: the object stands where the light goes on from the
+      // last face.
+      if (whollyOnSide(o.mesh, f, outgoingSide(f, path.lights[k - 1]))) {
+        VolumeGeometry v = objectShadowVolume(o, r.virtualLight.position, bounds);
+        if (!v.volume.empty()) r.shadows.push_back(std::move(v));
+      }
+      // MUST_INTERSECT, for every stretch of the path: between the light (or
+      // the face before) and face i, its shadow from the light of that
+      // stretch falls on face i and is passed on: the volume, from the last
+      // virtual light, of the object carried through faces i.. (a mirror's:
+      // its mirror image behind the face). The carried object is not drawn,
+      // so nothing hides its light cap: counted by z-fail.
+      for (std::size_t i = 0; i < k; ++i) {
+        const RefFace& fi = faces[static_cast<std::size_t>(path.faces[i])];
+        const DVec3 before = path.lights[i];
+        if (!whollyOnSide(o.mesh, fi, fi.side(before) > 0.0 ? 1.0 : -1.0)) continue;
+        if (i > 0) {
+          const RefFace& prev = faces[static_cast<std::size_t>(path.faces[i - 1])];
+          if (!whollyOnSide(o.mesh, prev, outgoingSide(prev, path.lights[i - 1]))) continue;
+        }
+        if (!shadowCrossesFace(o.mesh, fi.polygon, i == 0 ? light.position : Vec3(before))) continue;
+        SceneObject image = o;
+        image.name = o.name + (k == 1 ? (fi.kind == MaterialKind::Mirror ? " (mirror image)" : " (through the face)")
+                                      : " (carried along the light path)");
+        for (Vec3& p : image.mesh.positions) p = Vec3(carryAlongPath(path, faces, i, DVec3(p)));
+        if (carryTurnsWinding(path, faces, i))
+          for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
+        VolumeGeometry v = objectShadowVolume(image, r.virtualLight.position, bounds);
+        v.alwaysZFail = true;
+        if (!v.volume.empty()) r.shadows.push_back(std::move(v));
+      }
+    }
+    out.push_back(std::move(r));
+  }
   return out;
+}
+
+int reflectedLightCount(const Scene& scene, const std::vector<RefFace>& faces, bool* overLimit) {
+  return static_cast<int>(lightPaths(scene, faces, lightBounces(scene.render), kMaxLightPaths, overLimit).size());
 }
 
 }  // namespace mpr

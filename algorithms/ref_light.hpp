@@ -27,10 +27,18 @@
 
 namespace mpr {
 
+//
+// Light through several faces (1997 §4.2-4.3, algorithms/light_path.hpp):
+// with render.light_bounces > 1 a virtual light that reaches another face
+// has its own virtual light there. Its light volume is the intersection of
+// the constituent light volumes of every face on its path, each stenciled
+// (face_light_stencil once per face); its shadows are those of every
+// stretch of the path, each caster carried through the faces after it.
 struct ReflectedLight {
-  int light = 0, face = 0;
-  PointLight virtualLight;                // ref position, colour x reflectance or transmittance
-  VolumeGeometry lightVolume;             // the face's light volume
+  int light = 0, face = 0;                // face: the last face of the path
+  std::vector<int> path;                  // every face the light passed, in order (path.back() == face)
+  PointLight virtualLight;                // ref position, colour x every face's reflectance or transmittance
+  std::vector<VolumeGeometry> lightVolumes;  // the constituent light volumes, the last face's last
   std::vector<VolumeGeometry> shadows;    // from the virtual light: CAN'T_ and MUST_INTERSECT casters
 };
 
@@ -53,10 +61,13 @@ std::optional<DVec3> refLightPosition(const RefFace& face, DVec3 light);
 // and everything in its path move by the slab's shift.
 DVec3 transferThroughFace(const RefFace& face, DVec3 light, DVec3 ref, DVec3 p);
 
-// Every (light, ref face) pair with a virtual light, in light-then-face order.
+// Every light path with a virtual light (lightPaths, up to
+// lightBounces(render) faces): light by light, each first face followed by
+// the paths that go on from it.
 std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces);
 
-// How many such pairs a scene has (the planner's count).
-int reflectedLightCount(const Scene& scene, const std::vector<RefFace>& faces);
+// How many such paths a scene has (the planner's count); `overLimit`: more
+// than kMaxLightPaths.
+int reflectedLightCount(const Scene& scene, const std::vector<RefFace>& faces, bool* overLimit = nullptr);
 
 }  // namespace mpr

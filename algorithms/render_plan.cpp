@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "algorithms/image_samples.hpp"
+#include "algorithms/light_path.hpp"
 #include "algorithms/ref_light.hpp"
 #include "algorithms/shadow_pass.hpp"
 #include "framebuffer/profile.hpp"
@@ -72,11 +73,13 @@ std::uint64_t RenderPlan::predictedLightPasses() const {
 }
 
 std::uint64_t RenderPlan::predictedPasses() const {
+  if (lightPathsOverLimit) return kSaturated;  // refused by any --max-passes
   return saturatingAdd(saturatingAdd(predictedViews(), predictedLightPasses()), predictedShadowPasses());
 }
 
 double RenderPlan::paperEq7ShadowGenerations() const {
-  const double n = refFaces, d = reflections ? recursionDepth : 0;
+  // d: the depth of the light's reflections and refractions.
+  const double n = refFaces, d = shadows && refFaces > 0 ? lightBounces : 0;
   return n * (d * d + 3.0 * d) / 2.0 + 1.0;
 }
 
@@ -107,10 +110,24 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   // A mirror lit by a light lights the room through its light volume, a
   // stencil count like a shadow's, so it needs the shadow passes even when
   // nothing casts a shadow.
-  const int refLights = reflectedLightCount(scene, faces);
+  p.lightBounces = lightBounces(scene.render);
+  bool overLimit = false;
+  const std::vector<LightPath> paths = lightPaths(scene, faces, p.lightBounces, kMaxLightPaths, &overLimit);
+  const int refLights = static_cast<int>(paths.size());
   p.shadows = scene.render.shadows && p.lights > 0 && (p.shadowCasters > 0 || refLights > 0);
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
-  if (p.shadows) p.reflectedLights = refLights;
+  if (p.shadows) {
+    p.reflectedLights = refLights;
+    p.lightPathsOverLimit = overLimit;
+    // Shadow generations (1997 eq. (7)'s unit): the light's own volumes,
+    // and per virtual light its own shadows plus those carried from each
+    // stretch of its path.
+    p.shadowGenerations = p.lights;
+    for (const LightPath& lp : paths) {
+      p.shadowGenerations += 1 + static_cast<std::uint64_t>(lp.faces.size());
+      p.longestLightPath = std::max(p.longestLightPath, static_cast<int>(lp.faces.size()));
+    }
+  }
   p.images = accumulatedImages(scene);
   if (p.shadows)
     for (const PointLight& l : scene.lights)
@@ -152,7 +169,14 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
          "(LOAD, ACCUM 1/" << p.darknessLevels << ", RETURN); virtual lights stay hard\n";
   if (p.reflectedLights > 0)
     o << "  draw_ref_shadows: " << p.reflectedLights
-      << " virtual lights (a light reflected by a mirror face or refracted through a glass face), each with its light volume and shadows\n";
+      << " virtual lights (a light reflected by a mirror face or refracted through a glass face"
+      << (p.lightBounces > 1 ? ", or a virtual light's again, paths of up to " + std::to_string(p.lightBounces) +
+                                   " faces (the longest found: " + std::to_string(p.longestLightPath) +
+                                   "), each light volume stenciled once per face of its path"
+                             : std::string())
+      << "), each with its light volume and shadows\n";
+  if (p.lightPathsOverLimit)
+    o << "  refused: more than " << kMaxLightPaths << " light paths (lower render.light_bounces)\n";
   if (p.reflections)
     o << "  draw_ref_objects: " << p.refFaces << " faces, recursion depth " << p.recursionDepth
       << (p.shadows ? ", shadows in views up to level " + std::to_string(p.shadowDepth) : std::string()) << "\n";
@@ -166,6 +190,9 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
   }
   o << "\n  lit passes: " << countText(p.predictedLightPasses()) << "\n";
   o << "  shadow-volume passes: " << countText(p.predictedShadowPasses()) << "\n";
+  if (p.shadows)
+    o << "  shadow generations: " << p.shadowGenerations << " (every light's own volumes; per virtual light its "
+      << "own and one set per stretch of its path)\n";
   o << "  1997 eq. (7), shadow generations per light: " << p.paperEq7ShadowGenerations()
     << "; eq. (8), images: " << p.paperEq8Images() << " (the papers' order-of-growth estimates)\n";
   o << "culling " << (p.cull ? "on: faces seen from behind or hidden are skipped, counts never exceed these"

@@ -19,7 +19,11 @@ struct RenderPlan {
   int refFaces = 0;           // faces the recursion looks through (mirror and refracting)
   int refractingFaces = 0;    // of which refract (the rest reflect)
   int shadowCasters = 0;      // objects with a shadow volume: casters and refracting faces
-  int reflectedLights = 0;    // (light, ref face) pairs with a virtual light: draw_ref_shadows
+  int reflectedLights = 0;    // light paths with a virtual light: draw_ref_shadows (light_path.hpp)
+  int lightBounces = 1;       // the most faces a light path passes (render.light_bounces)
+  int longestLightPath = 0;   // the most faces a light path found passes
+  bool lightPathsOverLimit = false;  // more than kMaxLightPaths: refused (predictedPasses saturates)
+  std::uint64_t shadowGenerations = 0;  // volume sets generated per view: 1997 eq. (7)'s unit, all lights
   // darkness_levels (1994's second soft-shadow method): the lights drawn in
   // levels and how many each (soft_shadow_samples); their lit pass becomes
   // `darknessLevels` lit passes in every view with shadows.

@@ -277,10 +277,12 @@ void addAccuracyCommand(CLI::App& app, int& exitCode) {
   c->footer(
       "Renders the pipeline once per setting (one --vary key at a time around the scene's own values, or every\n"
       "combination with --product; without --vary: render.recursion_depth 0..3, render.shadow_recursion_depth\n"
-      "0..2, render.shadows, render.refraction_map), times each (median of --repeat), and measures it against\n"
-      "the ray-traced reference (mpr reference) and the single-pass baseline: RMS of luminance over the\n"
-      "reference's luminance range (1997 paper, section 7.4). Writes DIR/results.csv, results.json, report.html,\n"
-      "plot.svg, plot.png and the images. A sweep estimated to take longer than --budget is refused before it starts.");
+      "0..2, render.light_bounces 1..3, render.shadows, render.refraction_map, render.tessellation 1, 0.5, 0.25,\n"
+      "render.antialias_samples 4, 16, render.soft_shadow_samples 4, 16), times each (median of --repeat), and\n"
+      "measures it against the ray-traced reference (mpr reference) and the single-pass baseline: RMS of\n"
+      "luminance over the reference's luminance range (1997 paper, section 7.4). Writes DIR/results.csv,\n"
+      "results.json, report.html, plot.svg, plot.png and the images. A sweep estimated to take longer than\n"
+      "--budget is refused before it starts.");
   c->add_option("scene", o->scene, "scene file (YAML); none measures the default scene");
   c->add_option("--vary", o->vary, "KEY=V1,V2,... a scene key and its values (repeatable)");
   c->add_flag("--product", o->product, "render every combination of the --vary values");

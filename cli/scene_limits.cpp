@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "algorithms/light_path.hpp"
 #include "util/saturating.hpp"
 
 namespace mpr::cli {
@@ -21,6 +22,10 @@ void addSceneLimitOptions(CLI::App& command, SceneLimits& limits) {
 }
 
 std::string planLimitProblem(const Scene& scene, const RenderPlan& plan, bool cull, const SceneLimits& limits) {
+  if (plan.lightPathsOverLimit)
+    return scene.file + ": the lights have more than " + std::to_string(kMaxLightPaths) +
+           " paths through the specular faces (render.light_bounces " + std::to_string(plan.lightBounces) +
+           "); lower render.light_bounces";
   if (cull || plan.predictedPasses() <= limits.maxPasses) return "";
   return scene.file + ": the render would take " + countText(plan.predictedPasses()) +
          " passes (views, lit and shadow passes; mpr info --no-cull lists them), more than --max-passes " +

@@ -93,6 +93,10 @@ struct RenderSettings {
   int width = 640, height = 480;
   int recursionDepth = 2;        // mirror/refraction levels
   int shadowRecursionDepth = 1;
+  // Specular faces a light's path may pass (1997 §4.2-4.3: virtual lights of
+  // virtual lights); 0: shadow_recursion_depth, at least 1
+  // (algorithms/light_path.hpp, lightBounces).
+  int lightBounces = 0;
   int softShadowSamples = 1;   // light samples accumulated (1994's first method: shadowed images)
   SoftShadowMethod softShadowMethod = SoftShadowMethod::Images;
   int antialiasSamples = 1;    // jittered images accumulated (and lens samples with an aperture)

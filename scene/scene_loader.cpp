@@ -85,6 +85,9 @@ const std::vector<KeySpec> kRenderKeys = {
     {"width", "integer", "image width, default 640"}, {"height", "integer", "image height, default 480"},
     {"recursion_depth", "integer >= 0", "mirror and refraction levels, default 2"},
     {"shadow_recursion_depth", "integer >= 0", "levels that get shadows, default 1"},
+    {"light_bounces", "integer in [1, 16]",
+     "specular faces a light may pass on its way, each bounce a virtual light of a virtual light (1997 §4.2-4.3); "
+     "default shadow_recursion_depth, at least 1"},
     {"soft_shadow_samples", "integer >= 1",
      "light samples of every light with a radius, one shadowed image each, accumulated; default 1"},
     {"antialias_samples", "integer >= 1", "jittered (and, with camera.aperture, lens) images accumulated, default 1"},
@@ -270,6 +273,7 @@ class Loader {
     if (n["recursion_depth"]) r.recursionDepth = integer(n["recursion_depth"], "render.recursion_depth", 0, 1 << 20);
     if (n["shadow_recursion_depth"])
       r.shadowRecursionDepth = integer(n["shadow_recursion_depth"], "render.shadow_recursion_depth", 0, 1 << 20);
+    if (n["light_bounces"]) r.lightBounces = integer(n["light_bounces"], "render.light_bounces", 1, 16);
     if (n["soft_shadow_samples"]) r.softShadowSamples = integer(n["soft_shadow_samples"], "render.soft_shadow_samples", 1, 1024);
     if (n["antialias_samples"]) r.antialiasSamples = integer(n["antialias_samples"], "render.antialias_samples", 1, 1024);
     if (n["soft_shadow_method"]) {

@@ -1,5 +1,6 @@
 #include "reference/accuracy/sweep.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -47,6 +48,7 @@ VaryKey parseVary(const std::string& argument) {
 std::vector<VaryKey> defaultSweep() {
   return {{"render.recursion_depth", {"0", "1", "2", "3"}},
           {"render.shadow_recursion_depth", {"0", "1", "2"}},
+          {"render.light_bounces", {"1", "2", "3"}},
           {"render.shadows", {"true", "false"}},
           {"render.refraction_map", {"projection", "projection_zeroed_z", "end_of_pipeline"}},
           {"render.tessellation", {"1", "0.5", "0.25"}},
@@ -109,7 +111,7 @@ std::string sceneFingerprint(const Scene& s) {
     if (!ob.mesh.positions.empty()) o << vec(ob.mesh.positions.front()) << vec(ob.mesh.positions.back());
   }
   for (const char* k : {"render.width", "render.height", "render.recursion_depth",
-                               "render.shadow_recursion_depth", "render.soft_shadow_samples",
+                               "render.shadow_recursion_depth", "render.light_bounces", "render.soft_shadow_samples",
                                "render.soft_shadow_method", "render.antialias_samples", "render.shadows", "render.reflections",
                                "render.refractions", "render.translucency", "render.frosted", "render.profile",
                                "render.refraction_map", "render.tessellation"})
@@ -126,6 +128,8 @@ std::optional<std::string> sceneValue(const Scene& s, const std::string& key) {
   if (key == "render.height") return std::to_string(r.height);
   if (key == "render.recursion_depth") return std::to_string(r.recursionDepth);
   if (key == "render.shadow_recursion_depth") return std::to_string(r.shadowRecursionDepth);
+  if (key == "render.light_bounces")  // as algorithms/light_path's lightBounces
+    return std::to_string(r.lightBounces > 0 ? r.lightBounces : std::max(1, r.shadowRecursionDepth));
   if (key == "render.soft_shadow_samples") return std::to_string(r.softShadowSamples);
   if (key == "render.soft_shadow_method")
     return std::string(r.softShadowMethod == SoftShadowMethod::Images           ? "images"

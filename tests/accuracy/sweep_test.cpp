@@ -45,6 +45,20 @@ TEST(Sweep, TheDefaultSweepNamesKeysTheLoaderKnows) {
       EXPECT_NO_THROW(loadSceneText(defaultSceneText(), "<default>", {k.key + "=" + v})) << k.key << "=" << v;
 }
 
+// A swept value other than the scene's own is a different scene to the
+// fingerprint (a key it leaves out would make every value of it a
+// "duplicate" of the scene, silently dropped from the sweep).
+TEST(Sweep, EverySweptValueMovesTheFingerprint) {
+  const Scene base = loadSceneText(defaultSceneText(), "<default>");
+  for (const VaryKey& k : defaultSweep())
+    for (const std::string& v : k.values) {
+      const Scene s = loadSceneText(defaultSceneText(), "<default>", {k.key + "=" + v});
+      ASSERT_TRUE(sceneValue(s, k.key)) << k.key;
+      if (*sceneValue(base, k.key) == *sceneValue(s, k.key)) continue;
+      EXPECT_NE(sceneFingerprint(base), sceneFingerprint(s)) << k.key << "=" << v;
+    }
+}
+
 // The default scene has recursion_depth 2: that value loads to the scene
 // itself, and the fingerprint says so; 3 does not.
 TEST(Sweep, TheScenesOwnValueIsTheSameScene) {

@@ -124,6 +124,7 @@ const std::map<std::string, KeyCase>& cases() {
       {"render.height", {{}, {{"height: 24", "height: 20"}}}},
       {"render.recursion_depth", {{}, {{kRender, "render: {width: 32, height: 24, recursion_depth: 0}"}}}},
       {"render.shadow_recursion_depth", {{}, {{kRender, "render: {width: 32, height: 24, shadow_recursion_depth: 0}"}}}},
+      {"render.light_bounces", {{}, {{kRender, "render: {width: 32, height: 24, light_bounces: 2}"}}}},
       {"render.soft_shadow_samples", {{{kLight, "{position: [2, 4, 3], radius: 0.4}"}}, {{kRender, "render: {width: 32, height: 24, soft_shadow_samples: 3}"}}}},
       {"render.antialias_samples", {{}, {{kRender, "render: {width: 32, height: 24, antialias_samples: 3}"}}}},
       {"render.soft_shadow_method", {{{kLight, "{position: [2, 4, 3], radius: 0.4}"}, {kRender, "render: {width: 32, height: 24, soft_shadow_samples: 3}"}},
