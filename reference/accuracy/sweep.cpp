@@ -1,6 +1,7 @@
 #include "reference/accuracy/sweep.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 
@@ -96,25 +97,37 @@ std::vector<std::string> singlePassSets() {
           "render.soft_shadow_samples=1", "camera.aperture=0"};
 }
 
+namespace {
+// FNV-1a over raw bytes: every vertex, normal and index of a mesh.
+template <class T>
+void hashBytes(std::uint64_t& h, const std::vector<T>& v) {
+  const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+  for (std::size_t i = 0; i < v.size() * sizeof(T); ++i) h = (h ^ p[i]) * 1099511628211ull;
+}
+}  // namespace
+
 std::string sceneFingerprint(const Scene& s) {
   std::ostringstream o;
   o.precision(9);
   const Camera& c = s.camera;
-  o << vec(c.position) << vec(c.lookAt) << vec(c.up) << c.fovY << ' ' << c.near << ' ' << c.far << vec(s.ambient);
+  o << vec(c.position) << vec(c.lookAt) << vec(c.up) << c.fovY << ' ' << c.near << ' ' << c.far << ' ' << c.aperture
+    << ' ' << c.focalDistance << vec(s.ambient);
   for (const PointLight& l : s.lights) o << "L" << vec(l.position) << vec(l.color) << vec(l.attenuation) << l.radius;
   for (const SceneMaterial& m : s.materials)
     o << "M" << static_cast<int>(m.kind) << vec(m.diffuse) << vec(m.specular) << vec(m.emission) << m.shininess << ' '
       << m.reflectance << ' ' << m.ior << ' ' << m.transmittance << ' ' << m.fogDistance << ' ' << m.shear << ' '
-      << m.samples << ' ' << m.roughness << ' ' << m.thickness;
+      << m.samples << ' ' << m.roughness << vec(m.wardSpecular) << m.thickness;
   for (const SceneObject& ob : s.objects) {
-    o << "O" << ob.material << ob.castsShadows << ' ' << ob.mesh.positions.size() << ' ' << ob.mesh.triangles.size();
-    if (!ob.mesh.positions.empty()) o << vec(ob.mesh.positions.front()) << vec(ob.mesh.positions.back());
+    std::uint64_t h = 14695981039346656037ull;
+    hashBytes(h, ob.mesh.positions), hashBytes(h, ob.mesh.normals), hashBytes(h, ob.mesh.triangles);
+    o << "O" << ob.material << ob.castsShadows << ' ' << ob.mesh.positions.size() << ' ' << ob.mesh.triangles.size()
+      << ' ' << ob.mesh.faces.size() << ' ' << h;
   }
-  for (const char* k : {"render.width", "render.height", "render.recursion_depth",
-                               "render.shadow_recursion_depth", "render.light_bounces", "render.soft_shadow_samples",
-                               "render.soft_shadow_method", "render.antialias_samples", "render.shadows", "render.reflections",
-                               "render.refractions", "render.translucency", "render.frosted", "render.profile",
-                               "render.refraction_map", "render.tessellation"})
+  for (const char* k : {"render.width", "render.height", "render.recursion_depth", "render.shadow_recursion_depth",
+                        "render.light_bounces", "render.soft_shadow_samples", "render.soft_shadow_method",
+                        "render.antialias_samples", "render.shadows", "render.reflections", "render.refractions",
+                        "render.translucency", "render.frosted", "render.profile", "render.refraction_map",
+                        "render.tessellation"})
     o << "R" << *sceneValue(s, k);
   return o.str();
 }

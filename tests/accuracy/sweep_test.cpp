@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include <stdexcept>
 
 #include "scene/scene_loader.hpp"
@@ -57,6 +59,22 @@ TEST(Sweep, EverySweptValueMovesTheFingerprint) {
       if (*sceneValue(base, k.key) == *sceneValue(s, k.key)) continue;
       EXPECT_NE(sceneFingerprint(base), sceneFingerprint(s)) << k.key << "=" << v;
     }
+}
+
+// Keys outside the default sweep too: the lens, a light, a material's
+// roughness, an object's subdivisions and place (the whole mesh counts).
+TEST(Sweep, OtherKeysMoveTheFingerprint) {
+  const Scene base = loadSceneText(defaultSceneText(), "<default>");
+  for (const char* set : {"camera.aperture=0.1", "camera.focal_distance=3", "materials.floor.roughness=0.2",
+                          "lights=[{position: [0, 3.2, 1.5], radius: 0.3}]"})
+    EXPECT_NE(sceneFingerprint(base), sceneFingerprint(loadSceneText(defaultSceneText(), "<default>", {set}))) << set;
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"subdivisions: 8", "subdivisions: 6"},
+                                 {"translate: [-1.0, 0.5, 0.2]", "translate: [-1.0, 0.5, 0.21]"}}) {
+    std::string text = defaultSceneText();
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+    EXPECT_NE(sceneFingerprint(base), sceneFingerprint(loadSceneText(text, "<default>"))) << to;
+  }
 }
 
 // The default scene has recursion_depth 2: that value loads to the scene

@@ -77,6 +77,7 @@ TEST(RenderPlan, PaperEquationFiveByHand) {
   // views are the views of levels 1 and 2, 3 + 6.
   EXPECT_EQ(p.predictedShadowPasses(), (1u + 3u) * 2u + (3u + 6u) * 2u);
   EXPECT_EQ(p.predictedLightPasses(), 22u * 2u + (3u + 6u) * 2u);
+  p.lightBounces = 3;  // eq. (7)'s d: the depth of the light's reflections
   EXPECT_DOUBLE_EQ(p.paperEq7ShadowGenerations(), 3.0 * (9 + 9) / 2.0 + 1.0);
   EXPECT_DOUBLE_EQ(p.paperEq8Images(), 28.0);
 }
