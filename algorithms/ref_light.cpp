@@ -133,6 +133,14 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
     const DVec3 shift = f.refracts() && f.thickness > 0.0 ? ref - path.lights[k - 1] : DVec3(0.0);
     r.lightVolumes.push_back(objectShadowVolume(faceFacing(f, specular.name + " (light volume)", ref, shift),
                                                 r.virtualLight.position, bounds));
+    // A slab passes light on only where it stands in the light's way: a ray
+    // that enters near an edge and is shifted past it leaves by the slab's
+    // side, not its far face. So the shifted light volume is cut to the
+    // face's own shadow from the light before it, and no sliver beside the
+    // slab's shadow gets the direct and the passed-on light both (1 + T).
+    if (f.refracts() && f.thickness > 0.0)
+      r.lightVolumes.push_back(objectShadowVolume(faceFacing(f, specular.name + " (its own shadow)", path.lights[k - 1]),
+                                                  Vec3(path.lights[k - 1]), bounds));
     for (const SceneObject& o : scene.objects) {
       if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render))
         continue;

@@ -141,6 +141,14 @@ bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, d
     // first order; the spread stays 1).
     const std::optional<DVec3> x = slabCrossing(face, sImage, pImage);
     if (!x || !face.contains(*x)) return false;
+    // And only where the slab stands in the light's way (the straight ray
+    // crosses the face too): a ray shifted past the slab's edge leaves by
+    // its side, not its far face (as the pipeline's light volume is cut to
+    // the slab's own shadow, algorithms/ref_light.cpp).
+    {
+      const double ss = face.side(sImage), sp = face.side(pImage);
+      if (!face.contains(sImage + (pImage - sImage) * (ss / (ss - sp)))) return false;
+    }
     const DVec3 exit = *x + slabShift(glm::normalize(*x - sImage), face.normal, face.ior, face.thickness);
     PathPoints toPoint;
     if (!unfold(lp, chain, j + 1, n, 1, exit, pImage, toPoint)) return false;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "algorithms/ref_light.hpp"
@@ -151,6 +152,46 @@ render: {width: 64, height: 48, shadows: false}
   }
   EXPECT_EQ(slabDiffers, 0);
   EXPECT_GT(mediumDiffers, 20);
+}
+
+// A slab passes on light only where it stands in the light's way: with a
+// 1.0 slab at 50 degrees (shift 0.39, three pixels on the wall) no wall
+// pixel is brighter than without the slab (before the shifted light volume
+// was cut to the slab's own shadow, a three-pixel sliver beside the shadow
+// got the direct light and the passed-on light both, 1 + T), inside the
+// shadow the passed-on light is added, and on its far side a sliver gets
+// neither (the rays that leave by the slab's side).
+TEST(SlabRefraction, NoPixelGetsTheDirectAndThePassedOnLightBoth) {
+  const auto scene = [](bool pane) {
+    return loadSceneText(std::string(R"(
+camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov: 90, near: 0.1, far: 20}
+lights: [{position: [6, 0, 1]}]
+ambient: [0.1, 0.1, 0.1]
+materials: {glass: {kind: refractive, ior: 1.5, transmittance: 0.5, thickness: 1.0}, white: {diffuse: [0.8, 0.8, 0.8]}}
+objects:
+  - {name: wall, primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1], material: white}
+)") + (pane ? "  - {name: pane, primitive: quad, translate: [3, 0, -1.5], scale: 1.2, material: glass}\n" : "") +
+                             "render: {width: 64, height: 64}\n",
+                         "slab-sliver.yaml");
+  };
+  const auto colours = [](const Scene& sc) {
+    GLContext gl(64, 64, indigoProfile());
+    GLCommandStream stream(gl, false);
+    renderScene(sc, stream);
+    return gl.framebuffer().colorData();
+  };
+  const std::vector<Rgba8> with = colours(scene(true)), without = colours(scene(false));
+  int darker = 0, passedOn = 0;
+  std::uint8_t ambientOnly = 255;
+  for (std::size_t i = 0; i < with.size(); ++i) ambientOnly = std::min(ambientOnly, with[i][0]);  // the sliver
+  for (std::size_t i = 0; i < with.size(); ++i) {
+    for (int c = 0; c < 3; ++c) EXPECT_LE(with[i][c], without[i][c]) << i % 64 << "," << i / 64;
+    darker += with[i][0] < without[i][0];
+    passedOn += with[i][0] < without[i][0] && with[i][0] > ambientOnly + 10;
+  }
+  EXPECT_GT(darker, 200);    // the slab's shadow: about 19 x 19 pixels
+  EXPECT_GT(passedOn, 150);  // most of it lit by the passed-on light
+  EXPECT_GT(darker - passedOn, 20);  // the sliver by the slab's far edge gets neither
 }
 
 }  // namespace
