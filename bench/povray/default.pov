@@ -24,11 +24,12 @@
 //    shaded point (`circular orient`), 4x4 = 16 jittered shadow rays at
 //    every shaded point (not adaptive), whatever the pixel's sample count
 //    (AreaSamples, below, changes the 4).
-//  * the glass pane: POV-Ray refracts only at the surfaces of a solid, so the
-//    pane is a box 1 cm thick (ior 1.5): the ray is bent going in and bent
-//    back going out (in-out refraction, an offset of a few millimetres), where
-//    MPR and its reference bend the ray once at a single change-of-medium
-//    interface, so the pane's view of the room is shifted there and not here.
+//  * the glass pane: a box 3 cm thick (ior 1.5), as the default scene's pane
+//    is a 3 cm slab (`thickness: 0.03`, in-out refraction, 1997 §2): the ray
+//    is bent going in and bent back going out, leaving shifted and parallel
+//    to itself. MPR and its reference apply that shift at the face as
+//    modelled (thin in position); POV-Ray's box has its two faces 3 cm apart,
+//    so its view through the pane sits up to 1.5 cm off MPR's.
 //    The inner faces are fully transparent and unlit (interior_texture), so
 //    the pane's colour is 0.15 x lit + 0.85 x what lies behind, once, as in
 //    MPR's blend.
@@ -149,9 +150,9 @@ object {
   UnitQuad scale <2.4, 1.8, 1> translate <0, 1.6, -2.98> texture { T_mirror }
   #if (Photons) photons { target reflection on refraction off collect off } #end
 }
-// glass pane: a box 1 cm thick standing for MPR's single refracting quad
+// glass pane: a box 3 cm thick, MPR's slab of thickness 0.03
 box {
-  <-0.5, -0.5, -0.005>, <0.5, 0.5, 0.005>
+  <-0.5, -0.5, -0.015>, <0.5, 0.5, 0.015>
   texture { T_glass }
   interior_texture { pigment { rgbt <1, 1, 1, 1> } finish { ambient 0 diffuse 0 } }
   interior { ior 1.5 }
