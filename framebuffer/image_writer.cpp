@@ -1,33 +1,26 @@
 #include "framebuffer/image_writer.hpp"
 
-#include <OpenImageIO/imageio.h>
-
-#include <stdexcept>
 #include <vector>
+
+#include "util/image_io.hpp"
 
 namespace mpr {
 namespace {
 
 template <typename T>
-void writeRgb(AtomicFile& file, int w, int h, const T* rgb, OIIO::TypeDesc type) {
-  const std::string& path = file.target();
+void writeRgb(AtomicFile& file, int w, int h, const T* rgb) {
   // The format comes from the target's name; the bytes go to the temporary.
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-  OIIO::ImageSpec spec(w, h, 3, type);
   // GL rows are bottom-up; images top-down: start at the top row, step down.
-  const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(w) * 3 * static_cast<std::ptrdiff_t>(sizeof(T));
+  const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(w) * 3;
   const T* top = rgb + static_cast<std::size_t>(h - 1) * w * 3;
-  if (!out->open(file.temporaryPath(), spec) || !out->write_image(type, top, OIIO::AutoStride, -row) ||
-      !out->close())
-    throw std::runtime_error("cannot write " + path + ": " + out->geterror());
+  writeImageFile(file.target(), file.temporaryPath(), w, h, 3, top, -row);
   file.finish();
 }
 
 template <typename T>
-void writeRgbTo(const std::string& path, int w, int h, const T* rgb, OIIO::TypeDesc type) {
+void writeRgbTo(const std::string& path, int w, int h, const T* rgb) {
   AtomicFile file(path);
-  writeRgb(file, w, h, rgb, type);
+  writeRgb(file, w, h, rgb);
   file.commit();
 }
 
@@ -43,19 +36,19 @@ std::vector<std::uint8_t> colorRgb(const Framebuffer& fb) {
 }  // namespace
 
 void writeRgbImage(const std::string& path, int width, int height, const std::uint8_t* rgb) {
-  writeRgbTo(path, width, height, rgb, OIIO::TypeDesc::UINT8);
+  writeRgbTo(path, width, height, rgb);
 }
 
 void writeRgbImage(const std::string& path, int width, int height, const float* rgb) {
-  writeRgbTo(path, width, height, rgb, OIIO::TypeDesc::FLOAT);
+  writeRgbTo(path, width, height, rgb);
 }
 
 void writeRgbImage(AtomicFile& file, int width, int height, const std::uint8_t* rgb) {
-  writeRgb(file, width, height, rgb, OIIO::TypeDesc::UINT8);
+  writeRgb(file, width, height, rgb);
 }
 
 void writeRgbImage(AtomicFile& file, int width, int height, const float* rgb) {
-  writeRgb(file, width, height, rgb, OIIO::TypeDesc::FLOAT);
+  writeRgb(file, width, height, rgb);
 }
 
 void writeColorImage(const Framebuffer& fb, const std::string& path) {

@@ -1,6 +1,7 @@
 #pragma once
 // Writing the colour buffer as an ordinary image (top row first) through
-// OpenImageIO; the format follows the file extension (PNG, TIFF, EXR, ...).
+// OpenImageIO (util/image_io: loaded on first use); the format follows the
+// file extension (PNG, TIFF, EXR, ...).
 // Files are written through util/atomic_file: a fresh temporary in the
 // target's folder, renamed into place, so a reader never sees half a file, a
 // failed write leaves the old file untouched, and nothing else is touched.

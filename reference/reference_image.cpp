@@ -1,13 +1,12 @@
 #include "reference/reference_image.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cctype>
 #include <filesystem>
 #include <stdexcept>
 
 #include "framebuffer/fragment_ops.hpp"
 #include "framebuffer/image_writer.hpp"
+#include "util/image_io.hpp"
 
 namespace mpr {
 namespace {
@@ -38,17 +37,12 @@ void writeReferenceImage(const ReferenceImage& image, const std::string& path) {
 }
 
 ReferenceImage readReferenceImage(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw std::runtime_error("cannot read " + path + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.nchannels < 3) throw std::runtime_error("cannot read " + path + ": it has fewer than three channels");
-  const int w = spec.width, h = spec.height, channels = spec.nchannels;
-  const bool eightBit = spec.format == OIIO::TypeDesc::UINT8;
-  std::vector<float> floats(static_cast<std::size_t>(w) * h * channels);
-  std::vector<std::uint8_t> bytes(eightBit ? floats.size() : 0);
-  const bool ok = eightBit ? in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, bytes.data())
-                           : in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, floats.data());
-  if (!ok) throw std::runtime_error("cannot read " + path + ": " + in->geterror());
+  const DecodedImage in = readImageFile(path);
+  if (in.channels < 3) throw std::runtime_error("cannot read " + path + ": it has fewer than three channels");
+  const int w = in.width, h = in.height, channels = in.channels;
+  const bool eightBit = !in.isFloat;
+  const std::vector<std::uint8_t>& bytes = in.bytes;
+  const std::vector<float>& floats = in.floats;
   ReferenceImage image;
   image.width = w, image.height = h;
   image.rgb.resize(static_cast<std::size_t>(w) * h * 3);

@@ -1,14 +1,13 @@
 #include "reference/accuracy/accuracy_plot.hpp"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
+
+#include "util/image_io.hpp"
 
 namespace mpr {
 namespace {
@@ -154,46 +153,44 @@ std::string accuracyPlotSvg(const AccuracyReport& r) {
 }
 
 std::string accuracyPlotPng(const AccuracyReport& r) {
-  using namespace OIIO;
   const PlotLayout L = layout(r);
-  ImageBuf b(ImageSpec(L.W, L.H, 3, TypeDesc::UINT8));
-  const float white[3] = {1, 1, 1}, grid[3] = {0.9f, 0.9f, 0.9f}, ink[3] = {0.13f, 0.13f, 0.13f},
-              red[3] = {0.82f, 0.13f, 0.13f}, blue[3] = {0.15f, 0.45f, 0.8f}, grey[3] = {0.53f, 0.53f, 0.53f};
-  ImageBufAlgo::fill(b, white);
-  const int x1 = L.W - L.right, y1 = L.H - L.bottom;
-  const auto text = [&](int x, int y, const std::string& s, int size, ImageBufAlgo::TextAlignX ax = ImageBufAlgo::TextAlignX::Left) {
-    ImageBufAlgo::render_text(b, x, y, s, size, "DejaVuSans", ink, ax);  // no font: no text, the plot stays
+  std::vector<CanvasOp> ops;
+  using K = CanvasOp::Kind;
+  const auto op = [&](K kind, int x0, int y0, int x1, int y1, const float (&c)[3]) {
+    CanvasOp o;
+    o.kind = kind, o.x0 = x0, o.y0 = y0, o.x1 = x1, o.y1 = y1;
+    for (int i = 0; i < 3; ++i) o.rgb[i] = c[i];
+    ops.push_back(o);
   };
+  const float grid[3] = {0.9f, 0.9f, 0.9f}, ink[3] = {0.13f, 0.13f, 0.13f}, red[3] = {0.82f, 0.13f, 0.13f},
+              blue[3] = {0.15f, 0.45f, 0.8f}, grey[3] = {0.53f, 0.53f, 0.53f};
+  const auto text = [&](int x, int y, const std::string& s, int size, int align = -1) {
+    op(K::Text, x, y, 0, 0, ink);
+    ops.back().text = s, ops.back().size = size, ops.back().align = align;
+  };
+  const int x1 = L.W - L.right, y1 = L.H - L.bottom;
   for (const Tick& t : L.xTicks) {
-    ImageBufAlgo::render_line(b, int(t.pos), L.top, int(t.pos), y1, grid);
-    text(int(t.pos), y1 + 18, t.text, 12, ImageBufAlgo::TextAlignX::Center);
+    op(K::Line, int(t.pos), L.top, int(t.pos), y1, grid);
+    text(int(t.pos), y1 + 18, t.text, 12, 0);
   }
   for (const Tick& t : L.yTicks) {
-    ImageBufAlgo::render_line(b, L.left, int(t.pos), x1, int(t.pos), grid);
-    text(L.left - 6, int(t.pos) + 4, t.text, 12, ImageBufAlgo::TextAlignX::Right);
+    op(K::Line, L.left, int(t.pos), x1, int(t.pos), grid);
+    text(L.left - 6, int(t.pos) + 4, t.text, 12, 1);
   }
-  ImageBufAlgo::render_box(b, L.left, L.top, x1, y1, ink);
+  op(K::Box, L.left, L.top, x1, y1, ink);
   for (std::size_t i = 1; i < L.frontLine.size(); ++i)
-    ImageBufAlgo::render_line(b, int(L.frontLine[i - 1].first), int(L.frontLine[i - 1].second),
-                              int(L.frontLine[i].first), int(L.frontLine[i].second), red);
+    op(K::Line, int(L.frontLine[i - 1].first), int(L.frontLine[i - 1].second), int(L.frontLine[i].first),
+       int(L.frontLine[i].second), red);
   for (const PlotPoint& p : L.points) {
-    const float* c = p.baseline ? grey : p.front ? red : blue;
-    ImageBufAlgo::render_box(b, int(p.x) - 3, int(p.y) - 3, int(p.x) + 3, int(p.y) + 3, cspan<float>(c, 3), true);
+    op(K::FilledBox, int(p.x) - 3, int(p.y) - 3, int(p.x) + 3, int(p.y) + 3, p.baseline ? grey : p.front ? red : blue);
     if (p.front || p.baseline) text(int(p.x) + 6, int(p.y) - 6, p.label, 11);
   }
-  text((L.left + x1) / 2, L.H - 16, L.xTitle, 13, ImageBufAlgo::TextAlignX::Center);
+  text((L.left + x1) / 2, L.H - 16, L.xTitle, 13, 0);
   text(L.left, 22, L.title, 14);
-  // The y title, drawn sideways: rendered on its own and rotated.
-  ImageBuf ytitle(ImageSpec(300, 20, 3, TypeDesc::UINT8));
-  ImageBufAlgo::fill(ytitle, white);
-  ImageBufAlgo::render_text(ytitle, 150, 15, L.yTitle, 13, "DejaVuSans", ink, ImageBufAlgo::TextAlignX::Center);
-  ImageBuf rotated = ImageBufAlgo::rotate270(ytitle);
-  ImageBufAlgo::paste(b, 4, (L.top + y1) / 2 - 150, 0, 0, rotated);
-  std::vector<unsigned char> bytes;
-  Filesystem::IOVecOutput proxy(bytes);
-  b.set_write_ioproxy(&proxy);
-  if (!b.write("plot.png", TypeDesc::UINT8, "png")) throw std::runtime_error("cannot encode the plot: " + b.geterror());
-  return std::string(bytes.begin(), bytes.end());
+  // The y title, sideways.
+  op(K::TextUp, 4, (L.top + y1) / 2 - 150, 0, 0, ink);
+  ops.back().text = L.yTitle, ops.back().size = 13;
+  return drawCanvasPng(L.W, L.H, ops);
 }
 
 }  // namespace mpr
