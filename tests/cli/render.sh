@@ -17,6 +17,15 @@ for ext in tif exr; do
   "$MPR" render --width 16 --height 12 -o "$WORK/x.$ext" 2>/dev/null && [[ -s "$WORK/x.$ext" ]] || fail "no .$ext output"
 done
 "$MPR" render --width 16 --height 12 -o "$WORK/x.bmp" 2>/dev/null; [[ $? -eq 2 ]] || fail ".bmp should be refused"
+# Images go through the image module, opened on first use (util/image_io):
+# without it an image fails with the reason and nothing is written, and a
+# run that writes no image does not need it.
+out="$(MPR_IMAGE_IO=/nonexistent "$MPR" render --width 16 --height 12 -o "$WORK/nomodule.png" 2>&1)"; rc=$?
+[[ $rc -eq 1 && "$out" == *"cannot load the image module libmpr_image_io.so"*"set MPR_IMAGE_IO"* ]] ||
+  fail "without the image module: status $rc, $out"
+[[ ! -e "$WORK/nomodule.png" ]] || fail "without the image module an image was written"
+printf 'glClear GL_COLOR_BUFFER_BIT\n' > "$WORK/clear.gls"
+MPR_IMAGE_IO=/nonexistent "$MPR" gl "$WORK/clear.gls" -q || fail "mpr gl without images needed the image module"
 # A bad scene: status 2, the message located, the old output untouched, no new output.
 echo old > "$WORK/keep.png"
 printf 'camera:\n  positon: [0, 1, 2]\n' > "$WORK/bad.yaml"
