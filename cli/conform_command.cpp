@@ -46,6 +46,7 @@ constexpr EmulatedDeparture kEmulatedDepartures[] = {
     {"fog_hint_fastest", kFogHintIgnored},
     {"scalar_call_vector_param", kScalarCallVectorParam},
     {"shininess0_attenuated", kShininess0Attenuated},
+    {"projective_normal_matrix", kProjectiveNormalMatrix},
 };
 
 // Totals over many scripts, per buffer: the agreement table.

@@ -46,7 +46,7 @@ ConformanceBounds boundsFor(const Script& script) {
 }
 
 bool showsColourMaterialBackInBegin(const Script& script) {
-  bool twoSide = false, backTracked = false, inBegin = false, colourInBegin = false;
+  bool twoSide = false, backTracked = false, inBegin = false, colourInBegin = false, backMaterialInBegin = false;
   for (const ScriptCommand& c : script.commands) {
     if (c.kind != ScriptCommand::Kind::Call) continue;
     switch (c.call) {
@@ -56,6 +56,11 @@ bool showsColourMaterialBackInBegin(const Script& script) {
       case GLCall::ColorMaterial:
         if (c.args[0].bits == GL_BACK || c.args[0].bits == GL_FRONT_AND_BACK) backTracked = true;
         break;
+      case GLCall::Materialf: case GLCall::Materialfv:
+        // glMaterial of the back inside glBegin shows the same saturation
+        // (back_material_in_begin.gls)
+        if (inBegin && (c.args[0].bits == GL_BACK || c.args[0].bits == GL_FRONT_AND_BACK)) backMaterialInBegin = true;
+        break;
       case GLCall::Begin: inBegin = true; break;
       case GLCall::End: inBegin = false; break;
       case GLCall::Color3f: case GLCall::Color4f: case GLCall::Color3ub: case GLCall::Color4ub:
@@ -64,7 +69,7 @@ bool showsColourMaterialBackInBegin(const Script& script) {
       default: break;
     }
   }
-  return twoSide && backTracked && colourInBegin;
+  return twoSide && ((backTracked && colourInBegin) || backMaterialInBegin);
 }
 
 PointAgreement compareBuffers(const BufferSet& m, const BufferSet& g, const ConformanceBounds& bounds,

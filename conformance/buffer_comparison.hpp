@@ -67,8 +67,9 @@ PointAgreement compareBuffers(const BufferSet& mpr, const BufferSet& mesa, const
                               std::size_t keepMismatches = 10, const std::vector<DepartureRun>& departures = {});
 
 // The departures a script may show, by its calls (the ones that cannot be
-// emulated are recognised here: colour material on back faces with a colour
-// inside glBegin/glEnd).
+// emulated are recognised here: under two-sided lighting, colour material on
+// back faces with a colour inside glBegin/glEnd, or a glMaterial of the back
+// face inside glBegin/glEnd).
 bool showsColourMaterialBackInBegin(const Script& script);
 
 }  // namespace mpr

@@ -5,7 +5,7 @@
 namespace mpr {
 
 FragmentFate processFragment(const FragmentState& s, Framebuffer& fb, const Fragment& f) {
-  if (s.alpha.enabled && !compare(s.alpha.func, f.alpha, s.alpha.ref)) return FragmentFate::AlphaFailed;
+  if (s.alpha.enabled && !alphaTestPasses(s.alpha, f.alpha)) return FragmentFate::AlphaFailed;
 
   const std::uint32_t max = fb.profile().stencilMax();
   std::uint8_t& st = fb.stencil(f.x, f.y);

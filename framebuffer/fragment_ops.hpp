@@ -39,7 +39,7 @@ struct Fragment {
   int x, y;
   std::uint32_t depth;  // window depth as the stored integer
   Rgba8 color;          // already converted to the colour buffer's format
-  float alpha;          // unquantised alpha, for the alpha test
+  float alpha;          // alpha before conversion (the alpha test converts it itself)
 };
 
 // What happened to one fragment, for statistics and the pass stepper.
@@ -50,6 +50,14 @@ inline std::uint8_t floatToUnorm8(float c) {
   if (!(c > 0.0f)) return 0;  // also maps NaN to 0
   if (c >= 1.0f) return 255;
   return static_cast<std::uint8_t>(std::nearbyint(c * 255.0f));
+}
+
+// The alpha test in the colour buffer's precision: GL 1.1 section 4.1.3
+// converts ref to fixed point as an A component (section 2.13.9) and rounds
+// the fragment's alpha likewise for the comparison (llvmpipe does the same, lp_bld_alpha.c
+// lp_build_alpha_test; alpha_test_fixed_point.gls).
+inline bool alphaTestPasses(const AlphaTestState& a, float alpha) {
+  return compare(a.func, floatToUnorm8(alpha), floatToUnorm8(a.ref));
 }
 
 FragmentFate processFragment(const FragmentState& s, Framebuffer& fb, const Fragment& f);

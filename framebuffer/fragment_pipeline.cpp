@@ -9,7 +9,7 @@ enum class ColorWrites { None, All, Some };
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
 FragmentFate specialised(const FragmentState& s, Framebuffer& fb, const Fragment& f) {
   if constexpr (kAlpha)
-    if (!compare(s.alpha.func, f.alpha, s.alpha.ref)) return FragmentFate::AlphaFailed;
+    if (!alphaTestPasses(s.alpha, f.alpha)) return FragmentFate::AlphaFailed;
 
   [[maybe_unused]] const std::uint32_t max = fb.profile().stencilMax();
   [[maybe_unused]] std::uint8_t* st = nullptr;

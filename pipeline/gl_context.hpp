@@ -42,6 +42,7 @@ enum MesaDeparture : unsigned {
   kFogHintIgnored = 1u << 2,           // GL_FOG_HINT GL_FASTEST fogs per fragment too (fog_hint_fastest.gls)
   kScalarCallVectorParam = 1u << 3,    // glFogf/glLightf/glMaterialf/glLightModelf take a vector pname as (v,0,0,0)
   kShininess0Attenuated = 1u << 4,     // shininess 0 with a spot or attenuated light: specular (N.L)^(N.L) (shininess0_attenuated.gls)
+  kProjectiveNormalMatrix = 1u << 5,   // normals by the upper 3x3 of the modelview's 4x4 inverse (projective_normal_matrix.gls)
 };
 
 // Counters a renderer reports with --stats and a benchmark divides by time.

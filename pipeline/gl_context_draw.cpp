@@ -182,7 +182,14 @@ void GLContext::end() {
   inBegin_ = false;
 
   mvp_ = multiply(projection_.top(), modelview_.top());
-  normalMatrix_ = glm::transpose(glm::inverse(glm::mat3(modelview_.top())));
+  // GL 1.1 section 2.10.3: normals by the inverse transpose of the
+  // modelview's upper 3x3. Mesa's fixed-function program takes the upper 3x3
+  // of the 4x4 inverse instead (ffvertex_prog.c, STATE_MODELVIEW_MATRIX_INVTRANS),
+  // the same for an affine modelview, not for a projective one (the
+  // projective_normal_matrix departure).
+  normalMatrix_ = (departures_ & kProjectiveNormalMatrix)
+                      ? glm::transpose(glm::mat3(mesaInverse(modelview_.top())))
+                      : glm::transpose(glm::inverse(glm::mat3(modelview_.top())));
   clipPlanesClip_ = viewVolumePlanes();
   // _mesa_update_clip_plane: the eye plane by the projection's inverse as
   // Mesa keeps it (the clip-space planes st_atom_clip.c hands the draw module).

@@ -85,7 +85,10 @@ class GLEmulator final : public GLApi {
   void colorMaterial(GLenum face, GLenum mode) override { gl_.colorMaterial(face, mode); }
   void color3f(GLfloat r, GLfloat g, GLfloat b) override { gl_.color3f(r, g, b); }
   void color4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) override { gl_.color4f(r, g, b, a); }
-  void color3ub(GLubyte r, GLubyte g, GLubyte b) override { gl_.color3f(r / 255.0f, g / 255.0f, b / 255.0f); }
+  // Mesa's vbo_attrib_tmp.h TAG(Color3ub) is ATTR4F(..., 1.0): alpha 1 as
+  // GL 1.1 says, and a four-component colour in the vbo's vertex format (a
+  // wrap where the block had three; color3ub_wrap.gls).
+  void color3ub(GLubyte r, GLubyte g, GLubyte b) override { gl_.color4f(r / 255.0f, g / 255.0f, b / 255.0f, 1.0f); }
   void color4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) override { gl_.color4ub(r, g, b, a); }
   void normal3f(GLfloat x, GLfloat y, GLfloat z) override { gl_.normal3f(x, y, z); }
   void begin(GLenum mode) override { gl_.begin(mode); }

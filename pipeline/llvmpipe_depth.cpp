@@ -82,6 +82,15 @@ std::vector<DrawVertex> clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::
   return in;
 }
 
+// lp_setup_tri.c calc_fixed_position: (v - pixel_offset) * FIXED_ONE in
+// single precision, converted by cvtps2dq (nearest even; out of range or NaN
+// gives INT32_MIN).
+std::int64_t snapLikeLlvmpipe(float v) {
+  const float f = (v - 0.5f) * 256.0f;
+  if (!(std::fabs(f) < 2147483648.0f)) return std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::int64_t>(std::nearbyint(f));
+}
+
 }  // namespace
 
 // The vertex's clip mask as draw_llvm.c generate_clipmask computes it.
@@ -137,11 +146,40 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
     const LlWindow& a = t.v[i];
     const LlWindow& b = t.v[(i + 1) % 3];
     t.edgeLength[i] = std::hypot(static_cast<double>(b.x) - a.x, static_cast<double>(b.y) - a.y);
+    t.fixedX[i] = snapLikeLlvmpipe(a.x);
+    t.fixedY[i] = snapLikeLlvmpipe(a.y);
+  }
+  for (int i = 0; i < 3; ++i) {
+    // do_triangle_ccw: plane i runs from vertex i to i + 1; dcdx = y[i] -
+    // y[i+1], dcdy = x[i] - x[i+1], c = dcdx x[i] - dcdy y[i], plus one on
+    // the edges that own their ties (left edges, and with bottom_edge_rule 0
+    // the horizontal ones with dcdy > 0: the top-left rule of MPR's own
+    // rasterizer in llvmpipe's y-down space).
+    const int j = (i + 1) % 3;
+    const std::int64_t dcdx = t.fixedY[i] - t.fixedY[j], dcdy = t.fixedX[i] - t.fixedX[j];
+    t.c[i] = dcdx * t.fixedX[i] - dcdy * t.fixedY[i];
+    if (dcdx < 0 || (dcdx == 0 && dcdy > 0)) ++t.c[i];
   }
   triangles.push_back(t);
 }
 
-const LlvmpipeDepth::Triangle& LlvmpipeDepth::containing(double px, double py) const {
+bool LlvmpipeDepth::Triangle::covers(int x, int yDown) const {
+  // lp_rast_tri_tmp.h: the pixel at (x, y) (its centre, the offset of
+  // calc_fixed_position taken off) is inside when c + dcdy y - dcdx x > 0 on
+  // every plane (the rasteriser tests c - 1 >= 0).
+  const std::int64_t px = static_cast<std::int64_t>(x) * 256, py = static_cast<std::int64_t>(yDown) * 256;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const std::int64_t dcdx = fixedY[i] - fixedY[j], dcdy = fixedX[i] - fixedX[j];
+    if (!(c[i] + dcdy * py - dcdx * px > 0)) return false;
+  }
+  return true;
+}
+
+const LlvmpipeDepth::Triangle& LlvmpipeDepth::containing(int x, int yDown) const {
+  for (const Triangle& t : triangles)
+    if (t.covers(x, yDown)) return t;
+  const double px = x + 0.5, py = yDown + 0.5;
   const Triangle* best = &triangles[0];
   double bestDistance = -std::numeric_limits<double>::infinity();
   for (const Triangle& t : triangles) {

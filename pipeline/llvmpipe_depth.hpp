@@ -63,6 +63,11 @@ struct LlvmpipeDepth {
     float a0, dzdx, dzdy;
     std::array<LlWindow, 3> v;  // in the order set up, counter-clockwise in y-down space
     std::array<double, 3> edgeLength;  // |v[i+1] - v[i]|, for containing (set up once, not per pixel)
+    // lp_setup_tri.c calc_fixed_position: (v - 0.5) in 1/256 pixel, and the
+    // edges' half-plane constants of do_triangle_ccw (fill rule included).
+    std::array<std::int64_t, 3> fixedX, fixedY, c;
+    // Whether llvmpipe's rasterizer covers the pixel (x, yDown).
+    bool covers(int x, int yDown) const;
   };
 
   WindowTransform window;
@@ -74,17 +79,18 @@ struct LlvmpipeDepth {
   void add(const Vec4& a, const Vec4& b, const Vec4& c);
 
   float at(int x, int yDown) const {
-    const Triangle& t = triangles.size() == 1 ? triangles[0] : containing(x + 0.5, yDown + 0.5);
+    const Triangle& t = triangles.size() == 1 ? triangles[0] : containing(x, yDown);
     return std::fma(t.dzdy, static_cast<float>(yDown), std::fma(t.dzdx, static_cast<float>(x), t.a0));
   }
 
  private:
   void setUp(const DrawVertex& d0, const DrawVertex& d1, const DrawVertex& d2);
 
-  // The triangle whose edges are farthest outwards from the point: the one
-  // containing it, or the nearest where a pixel centre MPR covers falls just
-  // outside llvmpipe's polygon.
-  const Triangle& containing(double px, double py) const;
+  // The triangle llvmpipe's fixed-point edges cover the pixel with (the fill
+  // rule gives it to one of the fan); where a pixel MPR covers falls just
+  // outside llvmpipe's polygon, the one whose edges are farthest outwards
+  // from its centre.
+  const Triangle& containing(int x, int yDown) const;
 };
 
 }  // namespace mpr

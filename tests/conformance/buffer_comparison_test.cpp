@@ -60,3 +60,28 @@ TEST(ConformanceBounds, VerdictAtEachBound) {
 
 }  // namespace
 }  // namespace mpr
+
+namespace mpr {
+namespace {
+
+TEST(ColourMaterialBackInBegin, RecognisedByItsCalls) {
+  const char* twoSide = "glLightModeli GL_LIGHT_MODEL_TWO_SIDE 1\n";
+  // Colour material on the back with a colour inside glBegin.
+  EXPECT_TRUE(showsColourMaterialBackInBegin(parseScript(
+      std::string(twoSide) + "glColorMaterial GL_BACK GL_DIFFUSE\nglBegin GL_TRIANGLES\nglColor3f 1 0 0\nglEnd\n", "a")));
+  // A glMaterial of the back (or both faces) inside glBegin.
+  EXPECT_TRUE(showsColourMaterialBackInBegin(parseScript(
+      std::string(twoSide) + "glBegin GL_TRIANGLES\nglMaterialfv GL_BACK GL_AMBIENT 1 0 0 1\nglEnd\n", "b")));
+  EXPECT_TRUE(showsColourMaterialBackInBegin(parseScript(
+      std::string(twoSide) + "glBegin GL_TRIANGLES\nglMaterialf GL_FRONT_AND_BACK GL_SHININESS 5\nglEnd\n", "c")));
+  // Not: the front only, outside glBegin, or one-sided lighting.
+  EXPECT_FALSE(showsColourMaterialBackInBegin(parseScript(
+      std::string(twoSide) + "glBegin GL_TRIANGLES\nglMaterialfv GL_FRONT GL_AMBIENT 1 0 0 1\nglEnd\n", "d")));
+  EXPECT_FALSE(showsColourMaterialBackInBegin(parseScript(
+      std::string(twoSide) + "glMaterialfv GL_BACK GL_AMBIENT 1 0 0 1\nglBegin GL_TRIANGLES\nglEnd\n", "e")));
+  EXPECT_FALSE(showsColourMaterialBackInBegin(
+      parseScript("glBegin GL_TRIANGLES\nglMaterialfv GL_BACK GL_AMBIENT 1 0 0 1\nglEnd\n", "f")));
+}
+
+}  // namespace
+}  // namespace mpr

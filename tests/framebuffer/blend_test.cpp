@@ -267,8 +267,8 @@ TEST(BlendColourMask, EveryMaskWithAndWithoutBlending) {
 }
 
 // ---------------------------------------------------------------------------
-// Alpha test (GL 1.1 section 4.1.3): incoming alpha FUNC ref, on the
-// unquantised float alpha
+// Alpha test (GL 1.1 section 4.1.3): incoming alpha FUNC ref, both
+// converted to the colour buffer's fixed point first
 // ---------------------------------------------------------------------------
 
 using test::kFuncNames;
@@ -309,24 +309,34 @@ TEST(AlphaFunc, EveryFunctionAroundHalf) {
       EXPECT_EQ(alphaPasses(kFuncs[f], 0.5f, alphas[i]), table[f][i]) << kFuncNames[f] << " alpha " << alphas[i];
 }
 
-TEST(AlphaFunc, FloatRefsAreNotQuantised) {
-  // The comparison is on floats: one ulp either side of 0.5 is decided,
-  // although both would become the byte 128.
+TEST(AlphaFunc, ComparesInColourBufferPrecision) {
+  // GL 1.1 section 4.1.3: ref and the fragment's alpha are both converted to
+  // the colour buffer's fixed point (bytes here, round to nearest even)
+  // before the comparison. 0.5 is 127.5, the byte 128 (to even); one ulp
+  // above is 128 too (equal, not greater), one ulp below is 127.49999: 127.
   const float below = std::nextafter(0.5f, 0.0f), above = std::nextafter(0.5f, 1.0f);
   EXPECT_TRUE(alphaPasses(CompareFunc::Less, 0.5f, below));
   EXPECT_FALSE(alphaPasses(CompareFunc::Less, 0.5f, 0.5f));
-  EXPECT_FALSE(alphaPasses(CompareFunc::Equal, 0.5f, above));
-  EXPECT_TRUE(alphaPasses(CompareFunc::Greater, 0.5f, above));
-  // ref 0: GREATER fails at alpha 0 and passes at 0.001 (which is byte 0).
+  EXPECT_TRUE(alphaPasses(CompareFunc::Equal, 0.5f, above));
+  EXPECT_FALSE(alphaPasses(CompareFunc::Greater, 0.5f, above));
+  EXPECT_TRUE(alphaPasses(CompareFunc::Less, 0.5f, 0.498f));  // 126.99: byte 127
+  // ref 0: GREATER fails at 0.001 (byte 0) and passes at 0.002 (0.51: byte 1).
   EXPECT_FALSE(alphaPasses(CompareFunc::Greater, 0.0f, 0.0f));
-  EXPECT_TRUE(alphaPasses(CompareFunc::Greater, 0.0f, 0.001f));
-  // ref 1: LESS fails at alpha 1 and passes at 0.999; EQUAL passes at 1.
+  EXPECT_FALSE(alphaPasses(CompareFunc::Greater, 0.0f, 0.001f));
+  EXPECT_TRUE(alphaPasses(CompareFunc::Greater, 0.0f, 0.002f));
+  // ref 1: LESS fails at 0.999 (254.7: byte 255) and passes at 0.997 (254).
   EXPECT_FALSE(alphaPasses(CompareFunc::Less, 1.0f, 1.0f));
-  EXPECT_TRUE(alphaPasses(CompareFunc::Less, 1.0f, 0.999f));
+  EXPECT_FALSE(alphaPasses(CompareFunc::Less, 1.0f, 0.999f));
+  EXPECT_TRUE(alphaPasses(CompareFunc::Less, 1.0f, 0.997f));
   EXPECT_TRUE(alphaPasses(CompareFunc::Equal, 1.0f, 1.0f));
-  // A ref between two bytes: 0.3 vs alpha 0.3 (equal floats) and 0.29.
+  // A ref between two bytes: 0.3 (76.5: byte 76, the even one) against
+  // alpha 0.3 and 0.29 (73.95: byte 74).
   EXPECT_TRUE(alphaPasses(CompareFunc::Gequal, 0.3f, 0.3f));
   EXPECT_FALSE(alphaPasses(CompareFunc::Gequal, 0.3f, 0.29f));
+  // perspective seed 11 (alpha_test_fixed_point.gls): alpha 0.58265 is below
+  // ref 0.58364 as floats, but both are the byte 149, so GEQUAL passes.
+  EXPECT_TRUE(alphaPasses(CompareFunc::Gequal, 0.58364f, 0.58265f));
+  EXPECT_FALSE(alphaPasses(CompareFunc::Less, 0.58364f, 0.58265f));
 }
 
 TEST(AlphaFunc, TestsTheFloatAlphaNotTheColourByte) {
