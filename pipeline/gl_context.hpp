@@ -251,6 +251,11 @@ class GLContext {
   void drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
   void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                 const LlvmpipeDepth& depth);
+  // A triangle Mesa's draw module clips: llvmpipe's fan of it, each pixel its
+  // fixed-point edges cover, coloured by the whole triangle's weights.
+  void rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
+  void shadeColor(Fragment& f, Vec4 color, float fogCoord) const;  // fog, clamp, to bytes
+  void submitFragment(Fragment& f, FragmentFunction fragmentOp);   // the per-fragment operations, counted, observed
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
 
   Framebuffer fb_;

@@ -351,6 +351,11 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const Llvmpip
     for (float a : v.attr)
       if (!std::isfinite(a)) return;
   }
+  // Where Mesa's draw module clips the triangle, llvmpipe rasterises the fan
+  // draw makes of it, so that fan decides the coverage (and its planes the
+  // depth); MPR's own clipper would cover slightly other pixels along the
+  // edges clipping makes (issue 17 class 4, large_coordinates_clip.gls).
+  if (!windowMap_ && depth.clipped) return rasterizeLlvmpipeFan(tri, depth);
   // Inside every plane, clipPolygon would return the triangle as it is.
   if (insideAllPlanes(tri, clipPlanesClip_)) {
     for (const ClipVertex& v : tri)
@@ -461,28 +466,109 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
       auto interp = [&](int i) {
         return static_cast<float>((p0 * v[0]->attr[i] + p1 * v[1]->attr[i] + p2 * v[2]->attr[i]) * inv);
       };
-      Vec4 color(interp(colorOffset), interp(colorOffset + 1), interp(colorOffset + 2), interp(colorOffset + 3));
-      if (fog_.enabled) {
-        const float t = interp(8);
-        const float factor = fog_.perFragment ? fogFactor(fog_, t) : std::clamp(t, 0.0f, 1.0f);
-        color = applyFog(fog_, factor, color);
-      }
-      color = clampColor(color);
-      f.color = {floatToUnorm8(color.r), floatToUnorm8(color.g), floatToUnorm8(color.b), floatToUnorm8(color.a)};
-      f.alpha = color.a;
+      shadeColor(f, Vec4(interp(colorOffset), interp(colorOffset + 1), interp(colorOffset + 2), interp(colorOffset + 3)),
+                 fog_.enabled ? interp(8) : 0.0f);
     }
-    ++counters_.fragmentsTested;
-    if (fragmentObserver) {
-      FragmentEvent ev{x, y, fb_.stencil(x, y), 0, fb_.depth(x, y), f.depth, FragmentFate::Written, {}};
-      ev.fate = fragmentOp(frag_, fb_, f);
-      ev.stencilAfter = fb_.stencil(x, y);
-      ev.colorAfter = fb_.color(x, y);
-      if (ev.fate == FragmentFate::Written) ++counters_.fragmentsWritten;
-      fragmentObserver(ev);
-      return;
-    }
-    if (fragmentOp(frag_, fb_, f) == FragmentFate::Written) ++counters_.fragmentsWritten;
+    submitFragment(f, fragmentOp);
   });
+}
+
+void GLContext::shadeColor(Fragment& f, Vec4 color, float fogCoord) const {
+  if (fog_.enabled) {
+    const float factor = fog_.perFragment ? fogFactor(fog_, fogCoord) : std::clamp(fogCoord, 0.0f, 1.0f);
+    color = applyFog(fog_, factor, color);
+  }
+  color = clampColor(color);
+  f.color = {floatToUnorm8(color.r), floatToUnorm8(color.g), floatToUnorm8(color.b), floatToUnorm8(color.a)};
+  f.alpha = color.a;
+}
+
+void GLContext::submitFragment(Fragment& f, FragmentFunction fragmentOp) {
+  ++counters_.fragmentsTested;
+  if (fragmentObserver) {
+    const int x = f.x, y = f.y;
+    FragmentEvent ev{x, y, fb_.stencil(x, y), 0, fb_.depth(x, y), f.depth, FragmentFate::Written, {}};
+    ev.fate = fragmentOp(frag_, fb_, f);
+    ev.stencilAfter = fb_.stencil(x, y);
+    ev.colorAfter = fb_.color(x, y);
+    if (ev.fate == FragmentFate::Written) ++counters_.fragmentsWritten;
+    fragmentObserver(ev);
+    return;
+  }
+  if (fragmentOp(frag_, fb_, f) == FragmentFate::Written) ++counters_.fragmentsWritten;
+}
+
+void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth) {
+  if (depth.triangles.empty()) return;  // llvmpipe draws nothing of it
+  ++counters_.trianglesDrawn;
+  const PixelRect region = drawRegion();
+  if (region.empty()) return;
+  // Perspective-correct weights of the whole triangle at a window position
+  // (homogeneous rasterisation): with M's columns the vertices' clip (x, y,
+  // w), the point's clip-space barycentrics are proportional to
+  // adj(M) (xn, yn, 1); attributes are linear in clip space on the triangle,
+  // so this is what interpolating the clipped pieces gives, without the
+  // pieces (and for vertices behind the eye too).
+  double m[3][3];
+  for (int i = 0; i < 3; ++i) {
+    m[0][i] = tri[static_cast<std::size_t>(i)].clip.x;
+    m[1][i] = tri[static_cast<std::size_t>(i)].clip.y;
+    m[2][i] = tri[static_cast<std::size_t>(i)].clip.w;
+  }
+  double adj[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      // adj[r][c] = cofactor(c, r)
+      const int r0 = (c + 1) % 3, r1 = (c + 2) % 3, c0 = (r + 1) % 3, c1 = (r + 2) % 3;
+      adj[r][c] = m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
+    }
+  const int fbHeight = fb_.height();
+  const float depthMaxF = static_cast<float>(fb_.profile().depthMax());
+  const bool needColor = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] ||
+                         frag_.colorMask[3] || frag_.alpha.enabled;
+  const bool needDepth = frag_.depth.enabled;
+  const FragmentFunction fragmentOp = fragmentOp_;
+  // The region in llvmpipe's y-down rows.
+  const int rowLo = fbHeight - region.y1, rowHi = fbHeight - 1 - region.y0;
+  for (const LlvmpipeDepth::Triangle& t : depth.triangles) {
+    const bool front = (frontFace_ == GL_CCW) == t.ccwUp;
+    if (cullEnabled_ && (cullMode_ == GL_FRONT_AND_BACK || (cullMode_ == GL_FRONT) == front)) continue;
+    const int colorOffset = (front || !(lightingEnabled_ && lighting_.model.twoSide)) ? 0 : 4;
+    // Bounds of the pixels whose centres the fixed-point edges can cover
+    // (positions are (v - 0.5) * 256: pixel x's centre is at x * 256).
+    const std::int64_t minX = std::min({t.fixedX[0], t.fixedX[1], t.fixedX[2]}),
+                       maxX = std::max({t.fixedX[0], t.fixedX[1], t.fixedX[2]});
+    const std::int64_t minY = std::min({t.fixedY[0], t.fixedY[1], t.fixedY[2]}),
+                       maxY = std::max({t.fixedY[0], t.fixedY[1], t.fixedY[2]});
+    const auto floorDiv = [](std::int64_t a) { return a >= 0 ? a / 256 : -((-a + 255) / 256); };
+    const std::int64_t x0 = std::max<std::int64_t>(region.x0, floorDiv(minX)),
+                       x1 = std::min<std::int64_t>(region.x1 - 1, floorDiv(maxX) + 1);
+    const std::int64_t y0 = std::max<std::int64_t>(rowLo, floorDiv(minY)),
+                       y1 = std::min<std::int64_t>(rowHi, floorDiv(maxY) + 1);
+    for (std::int64_t yDown = y0; yDown <= y1; ++yDown)
+      for (std::int64_t x = x0; x <= x1; ++x) {
+        if (!t.covers(static_cast<int>(x), static_cast<int>(yDown))) continue;
+        const int y = fbHeight - 1 - static_cast<int>(yDown);
+        Fragment f{static_cast<int>(x), y, 0, Rgba8{0, 0, 0, 0}, 0.0f};
+        if (needDepth) {
+          const float z = std::clamp(LlvmpipeDepth::planeAt(t, static_cast<int>(x), static_cast<int>(yDown)), 0.0f, 1.0f);
+          f.depth = static_cast<std::uint32_t>(std::nearbyint(z * depthMaxF));
+        }
+        if (needColor) {
+          const double xn = (static_cast<double>(x) + 0.5 - vpTransX_) / vpScaleX_;
+          const double yn = (static_cast<double>(y) + 0.5 - vpTransY_) / vpScaleY_;
+          double b[3], sum = 0.0;
+          for (int i = 0; i < 3; ++i) sum += b[i] = adj[i][0] * xn + adj[i][1] * yn + adj[i][2];
+          if (!(std::fabs(sum) > 0.0)) continue;  // the plane seen edge-on: no weights
+          auto interp = [&](int k) {
+            return static_cast<float>((b[0] * tri[0].attr[k] + b[1] * tri[1].attr[k] + b[2] * tri[2].attr[k]) / sum);
+          };
+          shadeColor(f, Vec4(interp(colorOffset), interp(colorOffset + 1), interp(colorOffset + 2), interp(colorOffset + 3)),
+                     fog_.enabled ? interp(8) : 0.0f);
+        }
+        submitFragment(f, fragmentOp);
+      }
+  }
 }
 
 }  // namespace mpr

@@ -116,7 +116,8 @@ void LlvmpipeDepth::add(const Vec4& a, const Vec4& b, const Vec4& c) {
   // one plane with all three vertices is dropped; else clipped and fanned.
   const std::uint32_t ma = drawClipMask(a, *userPlanes), mb = drawClipMask(b, *userPlanes),
                       mc = drawClipMask(c, *userPlanes);
-  if ((ma | mb | mc) == 0) return setUp(tri[0], tri[1], tri[2]);
+  clipped = (ma | mb | mc) != 0;
+  if (!clipped) return setUp(tri[0], tri[1], tri[2]);
   if ((ma & mb & mc) != 0) return;
   const std::vector<DrawVertex> poly = clipLikeDraw(tri, ma | mb | mc, *userPlanes);
   for (std::size_t i = 2; i < poly.size(); ++i) setUp(poly[i - 1], poly[i], poly[0]);
@@ -130,6 +131,8 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
   const std::int64_t area = (fixed(p0.x) - fixed(p1.x)) * (fixed(p2.y) - fixed(p0.y)) -
                             (fixed(p2.x) - fixed(p0.x)) * (fixed(p0.y) - fixed(p1.y));
   if (area == 0) return;  // llvmpipe draws nothing
+  // y-down positions: a positive area here is counter-clockwise in GL's y-up window.
+  const bool ccwUp = area > 0;
   if (area < 0) std::swap(p0, p1);
   const float dx01 = p0.x - p1.x, dy01 = p0.y - p1.y;
   const float dx20 = p2.x - p0.x, dy20 = p2.y - p0.y;
@@ -138,6 +141,7 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
   const float dx01ooa = dx01 * ooa, dy01ooa = dy01 * ooa;
   const float dz01 = p0.z - p1.z, dz20 = p2.z - p0.z;
   Triangle t;
+  t.ccwUp = ccwUp;
   t.dzdx = dz01 * dy20ooa - dz20 * dy01ooa;
   t.dzdy = dz20 * dx01ooa - dz01 * dx20ooa;
   t.a0 = p0.z - (t.dzdx * (p0.x - 0.5f) + t.dzdy * (p0.y - 0.5f));
@@ -152,13 +156,15 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
   for (int i = 0; i < 3; ++i) {
     // do_triangle_ccw: plane i runs from vertex i to i + 1; dcdx = y[i] -
     // y[i+1], dcdy = x[i] - x[i+1], c = dcdx x[i] - dcdy y[i], plus one on
-    // the edges that own their ties (left edges, and with bottom_edge_rule 0
-    // the horizontal ones with dcdy > 0: the top-left rule of MPR's own
-    // rasterizer in llvmpipe's y-down space).
+    // the edges that own their ties: left edges, and the horizontal ones
+    // with dcdy < 0 (GL's bottom edge: OSMesa's rows are flipped, so
+    // llvmpipe's top-left rule is MPR's own left-bottom rule in y-up space;
+    // measured: a rectangle's row on its bottom edge is drawn, on its top
+    // edge not, whichever way it is wound).
     const int j = (i + 1) % 3;
     const std::int64_t dcdx = t.fixedY[i] - t.fixedY[j], dcdy = t.fixedX[i] - t.fixedX[j];
     t.c[i] = dcdx * t.fixedX[i] - dcdy * t.fixedY[i];
-    if (dcdx < 0 || (dcdx == 0 && dcdy > 0)) ++t.c[i];
+    if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) ++t.c[i];
   }
   triangles.push_back(t);
 }

@@ -66,6 +66,7 @@ struct LlvmpipeDepth {
     // lp_setup_tri.c calc_fixed_position: (v - 0.5) in 1/256 pixel, and the
     // edges' half-plane constants of do_triangle_ccw (fill rule included).
     std::array<std::int64_t, 3> fixedX, fixedY, c;
+    bool ccwUp = true;  // counter-clockwise in GL's y-up window space (its facing)
     // Whether llvmpipe's rasterizer covers the pixel (x, yDown).
     bool covers(int x, int yDown) const;
   };
@@ -73,13 +74,16 @@ struct LlvmpipeDepth {
   WindowTransform window;
   const std::vector<ClipPlane>* userPlanes;
   std::vector<Triangle> triangles;
+  // Whether draw's clipper cut the last triangle added (then its fan, not
+  // MPR's triangle, is what llvmpipe rasterises: GLContext draws that fan).
+  bool clipped = false;
 
   // Adds the triangles draw and llvmpipe make of (a, b, c), given in the
   // order llvmpipe receives it.
   void add(const Vec4& a, const Vec4& b, const Vec4& c);
 
-  float at(int x, int yDown) const {
-    const Triangle& t = triangles.size() == 1 ? triangles[0] : containing(x, yDown);
+  float at(int x, int yDown) const { return planeAt(triangles.size() == 1 ? triangles[0] : containing(x, yDown), x, yDown); }
+  static float planeAt(const Triangle& t, int x, int yDown) {
     return std::fma(t.dzdy, static_cast<float>(yDown), std::fma(t.dzdx, static_cast<float>(x), t.a0));
   }
 
