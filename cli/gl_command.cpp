@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/output_set.hpp"
+#include "cli/thread_option.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
 #include "pipeline/gl_context.hpp"
@@ -25,6 +26,7 @@ struct GlOptions {
   std::string dumpDir;
   bool dumpGiven = false;  // --dump '' is an error, not "no dump"
   bool quiet = false;
+  int threads = 1;
 };
 
 int runGl(const GlOptions& o) {
@@ -59,6 +61,7 @@ int runGl(const GlOptions& o) {
     std::cerr << o.script << ": " << e.what() << "\n";
     return 2;
   }
+  gl->setThreads(o.threads);
 
   // Snapshots are kept in memory and written with the final dumps, so an
   // interrupted run leaves no partial set behind.
@@ -141,6 +144,7 @@ void addGlCommand(CLI::App& app, int& exitCode) {
   gl->add_option("--profile", opts->profile, "hardware profile: indigo (default) or mesa; overrides @profile");
   auto dump = gl->add_option("--dump", opts->dumpDir, "write the final buffers (and snapshots) into this folder");
   gl->add_flag("-q,--quiet", opts->quiet, "print no summary line");
+  addThreadsOption(*gl, opts->threads);
   gl->callback([opts, dump, &exitCode] {
     opts->dumpGiven = dump->count() > 0;
     exitCode = runGl(*opts);

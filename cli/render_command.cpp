@@ -17,6 +17,7 @@
 #include "cli/scene_arguments.hpp"
 #include "cli/scene_limits.hpp"
 #include "cli/scene_test.hpp"
+#include "cli/thread_option.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
 #include "util/saturating.hpp"
@@ -50,6 +51,7 @@ struct RenderOptions {
   bool dumpGiven = false, traceGiven = false, statsGiven = false;  // --dump '' is an error, not "none"
   bool describe = false;
   bool noCull = false;
+  int threads = 1;
   SceneLimits limits;
 };
 
@@ -122,6 +124,7 @@ int runRender(const RenderOptions& o) {
     std::cerr << scene.file << ": " << e.what() << "\n";
     return 2;
   }
+  gl->setThreads(o.threads);
   GLCommandStream stream(*gl, o.traceGiven);
   // The scene's expect: list, read at its passes (nothing drawn changes).
   SceneExpectationWatcher watcher(scene, stream, *gl);
@@ -193,6 +196,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   auto stats =
       c->add_option("--stats", o->statsFile, "write statistics as JSON: passes by kind, calls, triangles, fragments, time");
   addSceneLimitOptions(*c, o->limits);
+  addThreadsOption(*c, o->threads);
   c->add_flag("--no-cull", o->noCull, "recurse into every mirror face, even those seen from behind or hidden");
   c->add_flag("--describe-format", o->describe, "print a JSON Schema-like description of the scene format");
   c->callback([o, dump, trace, stats, &exitCode] {

@@ -13,6 +13,7 @@
 #include "algorithms/scene_renderer.hpp"
 #include "stepper/script_passes.hpp"
 #include "cli/scene_limits.hpp"
+#include "cli/thread_option.hpp"
 #include "cli/step_page.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "stepper/gl_state_json.hpp"
@@ -31,6 +32,7 @@ struct StepOptions {
   bool htmlGiven = false;  // --html "" is an error, not "no page"
   bool pixelGiven = false;  // and so is --pixel ""
   int historyMb = 64;
+  int threads = 1;
   SceneLimits limits;  // a scene's: its meshes and the passes of its render
 };
 
@@ -40,12 +42,13 @@ struct PassLimitMessage {
   std::string text;
 };
 
-Script loadInput(const std::string& path, bool progress, const SceneLimits& limits) {
+Script loadInput(const std::string& path, bool progress, const SceneLimits& limits, int threads) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext != ".yaml" && ext != ".yml") return loadScript(path);
   const Scene scene = loadSceneFile(path, {}, limits.confine);
   if (progress) std::cerr << "mpr step: rendering " << path << " for its GL calls\n";
   GLContext gl(scene.render.width, scene.render.height, *findProfile(scene.render.profile));
+  gl.setThreads(threads);
   GLCommandStream stream(gl, true);
   try {
     renderScene(scene, stream, passLimitWatch(limits));
@@ -59,7 +62,7 @@ int runStep(const StepOptions& o) {
   const auto started = std::chrono::steady_clock::now();
   Script script;
   try {
-    script = loadInput(o.input, o.htmlGiven, o.limits);
+    script = loadInput(o.input, o.htmlGiven, o.limits, o.threads);
   } catch (const PassLimitMessage& e) {
     std::cerr << e.text << "\n";
     return 2;
@@ -104,6 +107,7 @@ int runStep(const StepOptions& o) {
     std::cerr << script.file << ": " << e.what() << "\n";
     return 2;
   }
+  context->setThreads(o.threads);  // --pixel observes fragments: each triangle then on one thread
   GLContext& gl = *context;
   if (px >= 0) {
     const std::string history = recordPixelHistory(script, gl, px, py);
@@ -160,6 +164,7 @@ void addStepCommand(CLI::App& app, int& exitCode) {
   c->add_option("--history-mb", o->historyMb, "with --html: the most megabytes of compressed pixel history (default 64)")
       ->needs(html);
   addSceneLimitOptions(*c, o->limits);
+  addThreadsOption(*c, o->threads);
   c->callback([o, html, pixel, &exitCode] {
     o->htmlGiven = html->count() > 0;
     o->pixelGiven = pixel->count() > 0;

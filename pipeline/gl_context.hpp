@@ -25,6 +25,7 @@
 #include "pipeline/matrix_stack.hpp"
 #include "pipeline/primitive_assembly.hpp"
 #include "util/vecmath.hpp"
+#include "util/worker_pool.hpp"
 
 namespace mpr {
 
@@ -200,6 +201,13 @@ class GLContext {
   // when unset.
   std::function<void(const FragmentEvent&)> fragmentObserver;
 
+  // Threads a large triangle's rows are split over (util/worker_pool.hpp):
+  // every pixel still sees its fragments in the same order, so the bytes,
+  // counts and observed histories are the same at any count (with an
+  // observer set, a triangle is drawn on one thread). Default 1.
+  void setThreads(int threads);
+  int threads() const { return pool_ ? pool_->threads() : 1; }
+
  private:
   struct Vertex {  // what glVertex captures, processed at glEnd
     Vec4 object;
@@ -255,10 +263,21 @@ class GLContext {
   // fixed-point edges cover, coloured by the whole triangle's weights.
   void rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
   void shadeColor(Fragment& f, Vec4 color, float fogCoord) const;  // fog, clamp, to bytes
-  void submitFragment(Fragment& f, FragmentFunction fragmentOp);   // the per-fragment operations, counted, observed
+  struct FragmentTally {  // a band's counts, summed into counters_ after the triangle
+    std::uint64_t tested = 0, written = 0;
+  };
+  // The per-fragment operations, counted, observed.
+  void submitFragment(Fragment& f, FragmentFunction fragmentOp, FragmentTally& tally);
+  // Runs rows(tally, n, k) for k < n, each drawing the rows y with
+  // y mod n == k of a triangle whose pixels lie in [x0, x1] x [y0, y1] (n = 1
+  // when it is small, threads are off or an observer is set), then sums the
+  // tallies into counters_.
+  void forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
+                   const std::function<void(FragmentTally&, int, int)>& rows);
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
 
   Framebuffer fb_;
+  std::unique_ptr<WorkerPool> pool_;
   GLenumValue error_ = 0;
   PipelineCounters counters_;
 

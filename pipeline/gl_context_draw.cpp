@@ -384,19 +384,50 @@ inline void GLContext::shadeColor(Fragment& f, Vec4 color, float fogCoord) const
   f.alpha = color.a;
 }
 
-inline void GLContext::submitFragment(Fragment& f, FragmentFunction fragmentOp) {
-  ++counters_.fragmentsTested;
+inline void GLContext::submitFragment(Fragment& f, FragmentFunction fragmentOp, FragmentTally& tally) {
+  ++tally.tested;
   if (fragmentObserver) {
     const int x = f.x, y = f.y;
     FragmentEvent ev{x, y, fb_.stencil(x, y), 0, fb_.depth(x, y), f.depth, FragmentFate::Written, {}};
     ev.fate = fragmentOp(frag_, fb_, f);
     ev.stencilAfter = fb_.stencil(x, y);
     ev.colorAfter = fb_.color(x, y);
-    if (ev.fate == FragmentFate::Written) ++counters_.fragmentsWritten;
+    if (ev.fate == FragmentFate::Written) ++tally.written;
     fragmentObserver(ev);
     return;
   }
-  if (fragmentOp(frag_, fb_, f) == FragmentFate::Written) ++counters_.fragmentsWritten;
+  if (fragmentOp(frag_, fb_, f) == FragmentFate::Written) ++tally.written;
+}
+
+void GLContext::setThreads(int threads) {
+  pool_ = threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr;
+}
+
+void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
+                            const std::function<void(FragmentTally&, int, int)>& rows) {
+  // A share of a few thousand pixels a thread pays for waking it.
+  constexpr std::int64_t kPixelsPerShare = 16384;
+  const std::int64_t height = y1 - y0 + 1, pixels = height * std::max<std::int64_t>(0, x1 - x0 + 1);
+  int n = 1;
+  if (pool_ && !fragmentObserver && height > 1)
+    n = static_cast<int>(std::min<std::int64_t>({pool_->threads(), height, pixels / kPixelsPerShare}));
+  if (n <= 1) {
+    FragmentTally tally;
+    rows(tally, 1, 0);
+    counters_.fragmentsTested += tally.tested;
+    counters_.fragmentsWritten += tally.written;
+    return;
+  }
+  std::vector<FragmentTally> tallies(static_cast<std::size_t>(n));
+  pool_->run(n, [&](int k) {
+    FragmentTally local;  // on the share's own stack: neighbours in one vector would share a cache line
+    rows(local, n, k);
+    tallies[static_cast<std::size_t>(k)] = local;
+  });
+  for (const FragmentTally& t : tallies) {  // sums: the same at any split
+    counters_.fragmentsTested += t.tested;
+    counters_.fragmentsWritten += t.written;
+  }
 }
 
 void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
@@ -459,7 +490,7 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   const bool needDepth = frag_.depth.enabled;
   const FragmentFunction fragmentOp = fragmentOp_;  // chosen by drawProcessed for this draw
 
-  rasterizeTriangle(snapped, bounds, [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
+  const auto pixel = [&](FragmentTally& tally, int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
     // Barycentric weights of the pixel centre.
     double b0, b1, b2;
     if (useSnapped) {
@@ -496,8 +527,24 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
       shadeColor(f, Vec4(interp(colorOffset), interp(colorOffset + 1), interp(colorOffset + 2), interp(colorOffset + 3)),
                  fog_.enabled ? interp(8) : 0.0f);
     }
-    submitFragment(f, fragmentOp);
-  });
+    submitFragment(f, fragmentOp, tally);
+  };
+  // The triangle's rows within the region, split into bands (forEachBand).
+  const std::int64_t top = std::max({snapped[0].y, snapped[1].y, snapped[2].y});
+  const std::int64_t bottom = std::min({snapped[0].y, snapped[1].y, snapped[2].y});
+  const std::int64_t left = std::min({snapped[0].x, snapped[1].x, snapped[2].x});
+  const std::int64_t right = std::max({snapped[0].x, snapped[1].x, snapped[2].x});
+  const std::int64_t rowLo = std::max<std::int64_t>(bounds.y0, ceilDivSubpixel(bottom)),
+                     rowHi = std::min<std::int64_t>(bounds.y1 - 1, floorDivSubpixel(top));
+  if (rowLo > rowHi) return;
+  forEachBand(std::max<std::int64_t>(bounds.x0, ceilDivSubpixel(left)),
+              std::min<std::int64_t>(bounds.x1 - 1, floorDivSubpixel(right)), rowLo, rowHi,
+              [&](FragmentTally& tally, int stride, int phase) {
+                rasterizeTriangle(
+                    snapped, bounds,
+                    [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) { pixel(tally, x, y, w0, w1, w2); },
+                    stride, phase);
+              });
 }
 
 namespace {
@@ -552,7 +599,9 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
                        x1 = std::min<std::int64_t>(region.x1 - 1, floorDiv(maxX) + 1);
     const std::int64_t y0 = std::max<std::int64_t>(rowLo, floorDiv(minY)),
                        y1 = std::min<std::int64_t>(rowHi, floorDiv(maxY) + 1);
-    for (std::int64_t yDown = y0; yDown <= y1; ++yDown) {
+    if (x0 > x1 || y0 > y1) continue;
+    forEachBand(x0, x1, y0, y1, [&](FragmentTally& tally, int stride, int phase) {
+    for (std::int64_t yDown = y0 + ((phase - y0 % stride) % stride + stride) % stride; yDown <= y1; yDown += stride) {
       // The row's span, solved from covers()' half-planes c + dcdy py - dcdx px > 0
       // (px = 256 x) in exact integers: the pixels a test of each would pass.
       std::int64_t spanLo = x0, spanHi = x1;
@@ -583,9 +632,10 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
           shadeColor(f, Vec4(interp(colorOffset), interp(colorOffset + 1), interp(colorOffset + 2), interp(colorOffset + 3)),
                      fog_.enabled ? interp(8) : 0.0f);
         }
-        submitFragment(f, fragmentOp);
+        submitFragment(f, fragmentOp, tally);
       }
     }
+    });
   }
 }
 

@@ -48,9 +48,12 @@ inline bool ownsTies(std::int64_t dx, std::int64_t dy) {
 
 // Calls emit(x, y, w0, w1, w2) for every covered pixel inside `clip`, where wi
 // are the (integer) edge-function weights of vertex i; their sum is the doubled
-// area. Degenerate triangles cover nothing.
+// area. Degenerate triangles cover nothing. With rowStride n > 1 only the rows
+// y with y mod n == rowPhase are visited (a thread's share of a large
+// triangle, interleaved so that every thread gets as many pixels).
 template <typename Emit>
-void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBounds& clip, Emit&& emit) {
+void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBounds& clip, Emit&& emit,
+                       int rowStride = 1, int rowPhase = 0) {
   std::array<SnappedVertex, 3> v = vIn;
   std::int64_t area = signedArea2(v[0], v[1], v[2]);
   if (area == 0) return;
@@ -93,7 +96,14 @@ void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBound
   // the span holds exactly the pixels a test of every pixel would pass, and
   // the weights handed on are the same integers.
   const std::int64_t width = px1 - px0;
-  for (std::int64_t py = py0; py <= py1; ++py) {
+  // The first row of this phase, and the edge functions advanced to it.
+  std::int64_t first = py0;
+  if (rowStride > 1) {
+    const std::int64_t r = ((py0 % rowStride) + rowStride) % rowStride;
+    first = py0 + ((rowPhase - r) % rowStride + rowStride) % rowStride;
+    for (int i = 0; i < 3; ++i) e[i].rowStart += (first - py0) * e[i].stepY;
+  }
+  for (std::int64_t py = first; py <= py1; py += rowStride) {
     std::int64_t k0 = 0, k1 = width;  // the span, as offsets from px0
     for (int i = 0; i < 3 && k0 <= k1; ++i) {
       const std::int64_t slack = e[i].rowStart - e[i].bias;  // E - bias at px0; covered where >= 0
@@ -109,9 +119,9 @@ void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBound
       else
         emit(static_cast<int>(px0 + k), static_cast<int>(py), w0, w1, w2);
     }
-    e[0].rowStart += e[0].stepY;
-    e[1].rowStart += e[1].stepY;
-    e[2].rowStart += e[2].stepY;
+    e[0].rowStart += rowStride * e[0].stepY;
+    e[1].rowStart += rowStride * e[1].stepY;
+    e[2].rowStart += rowStride * e[2].stepY;
   }
 }
 

@@ -6,6 +6,7 @@
 // the same integer weights.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -78,6 +79,40 @@ TEST(SpanRasterizer, SameHitsAsTheTestOfEveryPixel) {
     hits += want.size();
   }
   EXPECT_GT(hits, 100000u);  // the comparison covered many pixels
+}
+
+// A thread's share (rowStride n, rowPhase k: the rows y with y mod n == k):
+// the n shares together hit exactly the pixels of the whole triangle, each
+// once, with the same weights (GLContext::setThreads' invariance).
+TEST(SpanRasterizer, RowSharesTogetherAreTheWholeTriangle) {
+  std::mt19937 rng(15);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const int scale = 1 << (rng() % 7);
+    std::array<SnappedVertex, 3> v;
+    for (auto& p : v) {
+      p.x = static_cast<std::int64_t>(rng() % (scale * 256 * 4)) - scale * 256;
+      p.y = static_cast<std::int64_t>(rng() % (scale * 256 * 4)) - scale * 256;
+    }
+    const int cx = static_cast<int>(rng() % 8) - 4, cy = static_cast<int>(rng() % 8) - 4;
+    const PixelBounds clip{cx, cy, cx + 1 + static_cast<int>(rng() % 200), cy + 1 + static_cast<int>(rng() % 200)};
+    std::vector<Hit> whole = spans(v, clip), shared;
+    for (int n : {2, 3, 8}) {
+      shared.clear();
+      for (int k = 0; k < n; ++k)
+        rasterizeTriangle(
+            v, clip,
+            [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
+              EXPECT_EQ(((y % n) + n) % n, k);
+              shared.emplace_back(x, y, w0, w1, w2);
+            },
+            n, k);
+      // The whole triangle's order: rows upwards, each left to right.
+      std::sort(shared.begin(), shared.end(), [](const Hit& a, const Hit& b) {
+        return std::make_pair(std::get<1>(a), std::get<0>(a)) < std::make_pair(std::get<1>(b), std::get<0>(b));
+      });
+      ASSERT_EQ(shared, whole) << "trial " << trial << ", " << n << " shares";
+    }
+  }
 }
 
 }  // namespace

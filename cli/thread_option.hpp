@@ -1,0 +1,17 @@
+#pragma once
+// --threads for the commands that draw through the emulated pipeline (gl,
+// render, step): a large triangle's rows are split over that many threads
+// (GLContext::setThreads); the bytes are the same at any count.
+#include <CLI/CLI.hpp>
+
+#include "util/worker_pool.hpp"
+
+namespace mpr::cli {
+
+inline void addThreadsOption(CLI::App& command, int& threads) {
+  threads = hardwareThreads();
+  command.add_option("--threads", threads, "threads a large triangle's rows are drawn on (default: every hardware thread)")
+      ->check(CLI::Range(1, 256));
+}
+
+}  // namespace mpr::cli
