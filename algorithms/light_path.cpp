@@ -49,10 +49,10 @@ Polygon clipToLightVolume(Polygon poly, const Polygon& aperture, DVec3 apex) {
   return poly.empty() ? poly : clipPolygon(poly, base);
 }
 
-// The polygon the light leaves face f by, coming from `from` and seeming to
-// come from `to` after it: the face itself, a slab's shifted with the light.
+// The polygon the light leaves face f by: the face itself, a slab's shifted
+// with the light.
 Polygon leavingPolygon(const RefFace& f, DVec3 from, DVec3 to) {
-  const DVec3 shift = f.refracts() && f.thickness > 0.0 ? to - from : DVec3(0.0);
+  const DVec3 shift = leavingShift(f, from, to);
   Polygon p;
   for (const Vec3& v : f.polygon) p.push_back(DVec3(v) + shift);
   return p;
@@ -101,6 +101,10 @@ struct PathSearch {
 };
 
 }  // namespace
+
+DVec3 leavingShift(const RefFace& f, DVec3 from, DVec3 to) {
+  return f.refracts() && f.thickness > 0.0 ? to - from : DVec3(0.0);
+}
 
 DVec3 carryAlongPath(const LightPath& path, const std::vector<RefFace>& faces, std::size_t from, DVec3 p) {
   for (std::size_t i = from; i < path.faces.size(); ++i)

@@ -39,6 +39,10 @@ DVec3 carryAlongPath(const LightPath& path, const std::vector<RefFace>& faces, s
 // carried object's winding turns).
 bool carryTurnsWinding(const LightPath& path, const std::vector<RefFace>& faces, std::size_t from);
 
+// How far the light leaves face f shifted, coming from `from` and seeming
+// to come from `to` after it: a slab's shift (to - from), else nothing.
+DVec3 leavingShift(const RefFace& f, DVec3 from, DVec3 to);
+
 // Every light path of at most `bounces` faces, light by light, each path
 // followed by its extensions (depth first, faces in scene order). A path
 // goes on to face g when g is not its last face, the virtual light reaches

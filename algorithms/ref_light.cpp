@@ -130,7 +130,7 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
       r.lightVolumes.push_back(objectShadowVolume(
           polygonFacing(path.apertures[i], name + " (light volume, carried)", ref), r.virtualLight.position, bounds));
     }
-    const DVec3 shift = f.refracts() && f.thickness > 0.0 ? ref - path.lights[k - 1] : DVec3(0.0);
+    const DVec3 shift = leavingShift(f, path.lights[k - 1], ref);
     r.lightVolumes.push_back(objectShadowVolume(faceFacing(f, specular.name + " (light volume)", ref, shift),
                                                 r.virtualLight.position, bounds));
     // A slab passes light on only where it stands in the light's way: a ray
@@ -179,10 +179,6 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
     out.push_back(std::move(r));
   }
   return out;
-}
-
-int reflectedLightCount(const Scene& scene, const std::vector<RefFace>& faces, bool* overLimit) {
-  return static_cast<int>(lightPaths(scene, faces, lightBounces(scene.render), kMaxLightPaths, overLimit).size());
 }
 
 }  // namespace mpr

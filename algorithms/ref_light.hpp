@@ -66,8 +66,4 @@ DVec3 transferThroughFace(const RefFace& face, DVec3 light, DVec3 ref, DVec3 p);
 // the paths that go on from it.
 std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces);
 
-// How many such paths a scene has (the planner's count); `overLimit`: more
-// than kMaxLightPaths.
-int reflectedLightCount(const Scene& scene, const std::vector<RefFace>& faces, bool* overLimit = nullptr);
-
 }  // namespace mpr

@@ -274,6 +274,9 @@ class GLContext {
   // tallies into counters_.
   void forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
                    const std::function<void(FragmentTally&, int, int)>& rows);
+  // The colours a triangle wound `ccw` (GL window space) takes: 0 front, 4
+  // back (two-sided lighting); -1 when culled.
+  int facingColorOffset(bool ccw) const;
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
 
   Framebuffer fb_;

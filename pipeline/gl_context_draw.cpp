@@ -430,6 +430,12 @@ void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, s
   }
 }
 
+int GLContext::facingColorOffset(bool ccw) const {
+  const bool front = (frontFace_ == GL_CCW) == ccw;
+  if (cullEnabled_ && (cullMode_ == GL_FRONT_AND_BACK || (cullMode_ == GL_FRONT) == front)) return -1;
+  return (front || !(lightingEnabled_ && lighting_.model.twoSide)) ? 0 : 4;
+}
+
 void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                          const LlvmpipeDepth& depth) {
   const ClipVertex* v[3] = {&a, &b, &c};
@@ -462,10 +468,8 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   }
   const std::int64_t area = signedArea2(snapped[0], snapped[1], snapped[2]);
   if (area == 0) return;
-  const bool ccw = area > 0;
-  const bool front = (frontFace_ == GL_CCW) == ccw;
-  if (cullEnabled_ && (cullMode_ == GL_FRONT_AND_BACK || (cullMode_ == GL_FRONT) == front)) return;
-  const int colorOffset = (front || !(lightingEnabled_ && lighting_.model.twoSide)) ? 0 : 4;
+  const int colorOffset = facingColorOffset(area > 0);
+  if (colorOffset < 0) return;
 
   const PixelRect region = drawRegion();
   if (region.empty()) return;
@@ -585,20 +589,18 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
   // The region in llvmpipe's y-down rows.
   const int rowLo = fbHeight - region.y1, rowHi = fbHeight - 1 - region.y0;
   for (const LlvmpipeDepth::Triangle& t : depth.triangles) {
-    const bool front = (frontFace_ == GL_CCW) == t.ccwUp;
-    if (cullEnabled_ && (cullMode_ == GL_FRONT_AND_BACK || (cullMode_ == GL_FRONT) == front)) continue;
-    const int colorOffset = (front || !(lightingEnabled_ && lighting_.model.twoSide)) ? 0 : 4;
+    const int colorOffset = facingColorOffset(t.ccwUp);
+    if (colorOffset < 0) continue;
     // Bounds of the pixels whose centres the fixed-point edges can cover
     // (positions are (v - 0.5) * 256: pixel x's centre is at x * 256).
     const std::int64_t minX = std::min({t.fixedX[0], t.fixedX[1], t.fixedX[2]}),
                        maxX = std::max({t.fixedX[0], t.fixedX[1], t.fixedX[2]});
     const std::int64_t minY = std::min({t.fixedY[0], t.fixedY[1], t.fixedY[2]}),
                        maxY = std::max({t.fixedY[0], t.fixedY[1], t.fixedY[2]});
-    const auto floorDiv = [](std::int64_t a) { return a >= 0 ? a / 256 : -((-a + 255) / 256); };
-    const std::int64_t x0 = std::max<std::int64_t>(region.x0, floorDiv(minX)),
-                       x1 = std::min<std::int64_t>(region.x1 - 1, floorDiv(maxX) + 1);
-    const std::int64_t y0 = std::max<std::int64_t>(rowLo, floorDiv(minY)),
-                       y1 = std::min<std::int64_t>(rowHi, floorDiv(maxY) + 1);
+    const std::int64_t x0 = std::max<std::int64_t>(region.x0, floorDivide(minX, 256)),
+                       x1 = std::min<std::int64_t>(region.x1 - 1, floorDivide(maxX, 256) + 1);
+    const std::int64_t y0 = std::max<std::int64_t>(rowLo, floorDivide(minY, 256)),
+                       y1 = std::min<std::int64_t>(rowHi, floorDivide(maxY, 256) + 1);
     if (x0 > x1 || y0 > y1) continue;
     forEachBand(x0, x1, y0, y1, [&](FragmentTally& tally, int stride, int phase) {
     for (std::int64_t yDown = y0 + ((phase - y0 % stride) % stride + stride) % stride; yDown <= y1; yDown += stride) {

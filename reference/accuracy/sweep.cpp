@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "algorithms/light_path.hpp"
+
 namespace mpr {
 namespace {
 
@@ -141,8 +143,7 @@ std::optional<std::string> sceneValue(const Scene& s, const std::string& key) {
   if (key == "render.height") return std::to_string(r.height);
   if (key == "render.recursion_depth") return std::to_string(r.recursionDepth);
   if (key == "render.shadow_recursion_depth") return std::to_string(r.shadowRecursionDepth);
-  if (key == "render.light_bounces")  // as algorithms/light_path's lightBounces
-    return std::to_string(r.lightBounces > 0 ? r.lightBounces : std::max(1, r.shadowRecursionDepth));
+  if (key == "render.light_bounces") return std::to_string(lightBounces(r));
   if (key == "render.soft_shadow_samples") return std::to_string(r.softShadowSamples);
   if (key == "render.soft_shadow_method")
     return std::string(r.softShadowMethod == SoftShadowMethod::Images           ? "images"
