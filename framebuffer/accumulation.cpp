@@ -1,7 +1,11 @@
 #include "framebuffer/accumulation.hpp"
 
+#include <array>
+
 #include <cmath>
 #include <cstdint>
+
+#include "framebuffer/fragment_ops.hpp"
 
 namespace mpr {
 namespace {
@@ -35,7 +39,7 @@ std::int16_t sumWord(std::int32_t a, std::int32_t b, bool wraps) {
 std::uint8_t unitToUnorm8(float x) {
   if (!(x >= 0.0f)) return 0;
   if (x > 1.0f) return 255;
-  return static_cast<std::uint8_t>(std::nearbyint(x * 255.0f));
+  return static_cast<std::uint8_t>(roundNonNegative(x * 255.0f));
 }
 
 }  // namespace
@@ -79,12 +83,16 @@ void accumulate(Framebuffer& fb, const PixelRect& region, AccumOp op, float valu
       if (op == AccumOp::Accum && value == 0.0f) return;
       const float scale = value * 32767.0f;
       const float toUnit = 1.0f / 255.0f;
+      // The product depends on the colour byte alone: its 256 words once,
+      // then a lookup per channel.
+      std::array<std::int16_t, 256> word;
+      for (int v = 0; v < 256; ++v) word[v] = productWord(static_cast<float>(v) * toUnit * scale, wraps);
       for (int y = r.y0; y < r.y1; ++y)
         for (int x = r.x0; x < r.x1; ++x) {
           std::int16_t* a = fb.accum(x, y);
           const Rgba8& col = fb.color(x, y);
           for (int c = 0; c < channels; ++c) {
-            const std::int16_t w = productWord(static_cast<float>(col[c]) * toUnit * scale, wraps);
+            const std::int16_t w = word[col[c]];
             a[c] = op == AccumOp::Load ? w : sumWord(a[c], w, wraps);
           }
         }

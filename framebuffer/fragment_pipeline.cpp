@@ -1,77 +1,184 @@
 #include "framebuffer/fragment_pipeline.hpp"
 
+#include <bit>
+#include <cstring>
+
+#include "framebuffer/fragment_span_stages.hpp"
+
 namespace mpr {
 namespace {
 
 enum class ColorWrites { None, All, Some };
 
-// processFragment (fragment_ops.cpp) with its state switches decided at compile time.
+// processFragment (fragment_ops.cpp) with its state switches decided at
+// compile time, on the pixel's three buffer cells.
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
-FragmentFate specialised(const FragmentState& s, Framebuffer& fb, const Fragment& f) {
+[[gnu::always_inline]] inline FragmentFate specialisedAt(const FragmentState& s, std::uint32_t stencilMax,
+                                                         std::uint8_t* st, std::uint32_t* z, Rgba8* dst,
+                                                         std::uint32_t depth, Rgba8 color, float alpha) {
   if constexpr (kAlpha)
-    if (!alphaTestPasses(s.alpha, f.alpha)) return FragmentFate::AlphaFailed;
-
-  [[maybe_unused]] const std::uint32_t max = fb.profile().stencilMax();
-  [[maybe_unused]] std::uint8_t* st = nullptr;
+    if (!alphaTestPasses(s.alpha, alpha)) return FragmentFate::AlphaFailed;
   if constexpr (kStencil) {
-    st = &fb.stencil(f.x, f.y);
     if (!stencilTest(s.stencil, *st)) {
-      *st = static_cast<std::uint8_t>(applyStencilOp(s.stencil.sfail, *st, s.stencil, max));
+      *st = static_cast<std::uint8_t>(applyStencilOp(s.stencil.sfail, *st, s.stencil, stencilMax));
       return FragmentFate::StencilFailed;
     }
   }
   if constexpr (kDepth) {
-    std::uint32_t& z = fb.depth(f.x, f.y);
-    if (!compare(s.depth.func, f.depth, z)) {
-      if constexpr (kStencil) *st = static_cast<std::uint8_t>(applyStencilOp(s.stencil.dpfail, *st, s.stencil, max));
+    if (!compare(s.depth.func, depth, *z)) {
+      if constexpr (kStencil)
+        *st = static_cast<std::uint8_t>(applyStencilOp(s.stencil.dpfail, *st, s.stencil, stencilMax));
       return FragmentFate::DepthFailed;
     }
-    if (s.depth.writeMask) z = f.depth;
+    if (s.depth.writeMask) *z = depth;
   }
-  if constexpr (kStencil) *st = static_cast<std::uint8_t>(applyStencilOp(s.stencil.dppass, *st, s.stencil, max));
+  if constexpr (kStencil)
+    *st = static_cast<std::uint8_t>(applyStencilOp(s.stencil.dppass, *st, s.stencil, stencilMax));
 
   if constexpr (kColor != ColorWrites::None) {
-    Rgba8& dst = fb.color(f.x, f.y);
-    Rgba8 src = f.color;
-    if constexpr (kBlend) src = blend(s.blend, f.color, dst);
+    Rgba8 src = color;
+    if constexpr (kBlend) src = blend(s.blend, color, *dst);
     if constexpr (kColor == ColorWrites::All) {
-      dst = src;
+      *dst = src;
     } else {
       for (int c = 0; c < 4; ++c)
-        if (s.colorMask[c]) dst[c] = src[c];
+        if (s.colorMask[c]) (*dst)[c] = src[c];
     }
   }
   return FragmentFate::Written;
 }
 
+template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
+FragmentFate specialised(const FragmentState& s, Framebuffer& fb, const Fragment& f) {
+  return specialisedAt<kAlpha, kStencil, kDepth, kBlend, kColor>(
+      s, fb.profile().stencilMax(), &fb.stencil(f.x, f.y), &fb.depth(f.x, f.y), &fb.color(f.x, f.y), f.depth, f.color,
+      f.alpha);
+}
+
+// Byte c of a colour (Rgba8 channel c) within its 32-bit word in memory.
+constexpr int channelShift(int c) { return std::endian::native == std::endian::little ? 8 * c : 8 * (3 - c); }
+
+// The same over a span, stage by stage as GL orders them (span::*, one
+// state switch per stage and span): which fragments pass each test is
+// decided for the whole span, then stencil, depth and colour are written
+// where the fragment-by-fragment run would write them. The pixels of a span
+// are distinct, so no fragment sees another's writes either way.
+template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
+std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
+  constexpr int N = FragmentSpan::kCapacity;
+  const int n = span.count;
+  std::uint8_t* const st = &fb.stencil(span.x, span.y);
+  std::uint32_t* const z = &fb.depth(span.x, span.y);
+  Rgba8* const dst = &fb.color(span.x, span.y);
+
+  alignas(64) std::uint32_t alive[N];  // past the alpha test
+  if constexpr (kAlpha) {
+    alignas(64) std::uint32_t a8[N];
+    for (int k = 0; k < n; ++k) a8[k] = floatToUnorm8(span.alpha[k]);
+    const std::uint32_t ref = floatToUnorm8(s.alpha.ref);
+    span::compare(s.alpha.func, n, [&](int k) { return a8[k]; }, [&](int) { return ref; }, alive);
+  } else {
+    for (int k = 0; k < n; ++k) alive[k] = 1;
+  }
+
+  alignas(64) std::uint32_t stored[N], stencilPass[N];
+  if constexpr (kStencil) {
+    for (int k = 0; k < n; ++k) stored[k] = st[k];
+    const std::uint32_t mask = s.stencil.valueMask, ref = s.stencil.ref & mask;
+    span::compare(s.stencil.func, n, [&](int) { return ref; }, [&](int k) { return stored[k] & mask; }, stencilPass);
+  } else {
+    for (int k = 0; k < n; ++k) stencilPass[k] = 1;
+  }
+
+  alignas(64) std::uint32_t depthPass[N];
+  if constexpr (kDepth) {
+    span::compare(s.depth.func, n, [&](int k) { return span.depth[k]; }, [&](int k) { return z[k]; }, depthPass);
+  } else {
+    for (int k = 0; k < n; ++k) depthPass[k] = 1;
+  }
+
+  alignas(64) std::uint32_t written[N];
+  std::uint32_t count = 0;
+  for (int k = 0; k < n; ++k) {
+    written[k] = alive[k] & stencilPass[k] & depthPass[k];
+    count += written[k];
+  }
+
+  if constexpr (kStencil) {
+    // sfail where the stencil test failed, dpfail where the depth test did,
+    // dppass where both passed; a fragment the alpha test killed leaves it.
+    const std::uint32_t max = fb.profile().stencilMax(), m = s.stencil.writeMask & max, ref = s.stencil.ref;
+    alignas(64) std::uint32_t onFail[N], onDepthFail[N], onPass[N];
+    span::stencilOpValues(s.stencil.sfail, n, stored, ref, max, onFail);
+    span::stencilOpValues(s.stencil.dpfail, n, stored, ref, max, onDepthFail);
+    span::stencilOpValues(s.stencil.dppass, n, stored, ref, max, onPass);
+    for (int k = 0; k < n; ++k) {
+      const std::uint32_t v = !alive[k] ? stored[k] : !stencilPass[k] ? onFail[k] : !depthPass[k] ? onDepthFail[k] : onPass[k];
+      st[k] = static_cast<std::uint8_t>((stored[k] & ~m) | (v & m));
+    }
+  }
+  if constexpr (kDepth) {
+    if (s.depth.writeMask)
+      for (int k = 0; k < n; ++k) z[k] = written[k] ? span.depth[k] : z[k];
+  }
+
+  if constexpr (kColor != ColorWrites::None) {
+    alignas(64) std::uint32_t src32[N], dst32[N];
+    std::memcpy(src32, span.color.data(), sizeof(Rgba8) * static_cast<std::size_t>(n));
+    std::memcpy(dst32, dst, sizeof(Rgba8) * static_cast<std::size_t>(n));
+    if constexpr (kBlend) {
+      span::Channels<N> sc, dc, out;
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < n; ++k) {
+          sc.c[c][k] = static_cast<std::uint16_t>((src32[k] >> channelShift(c)) & 0xFFu);
+          dc.c[c][k] = static_cast<std::uint16_t>((dst32[k] >> channelShift(c)) & 0xFFu);
+        }
+      span::blendChannels(s.blend, n, sc, dc, out);
+      for (int k = 0; k < n; ++k)
+        src32[k] = std::uint32_t{out.c[0][k]} << channelShift(0) | std::uint32_t{out.c[1][k]} << channelShift(1) |
+                   std::uint32_t{out.c[2][k]} << channelShift(2) | std::uint32_t{out.c[3][k]} << channelShift(3);
+    }
+    std::uint32_t keep = 0;  // the bits of each word the colour mask writes
+    for (int c = 0; c < 4; ++c)
+      if (kColor == ColorWrites::All || s.colorMask[c]) keep |= 0xFFu << channelShift(c);
+    for (int k = 0; k < n; ++k) dst32[k] = written[k] ? (dst32[k] & ~keep) | (src32[k] & keep) : dst32[k];
+    std::memcpy(dst, dst32, sizeof(Rgba8) * static_cast<std::size_t>(n));
+  }
+  return count;
+}
+
+template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
+constexpr FragmentPipeline kPipeline{specialised<kAlpha, kStencil, kDepth, kBlend, kColor>,
+                                     specialisedSpan<kAlpha, kStencil, kDepth, kBlend, kColor>};
+
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend>
-FragmentFunction byColor(ColorWrites c) {
+FragmentPipeline byColor(ColorWrites c) {
   switch (c) {
-    case ColorWrites::None: return specialised<kAlpha, kStencil, kDepth, kBlend, ColorWrites::None>;
-    case ColorWrites::All: return specialised<kAlpha, kStencil, kDepth, kBlend, ColorWrites::All>;
+    case ColorWrites::None: return kPipeline<kAlpha, kStencil, kDepth, kBlend, ColorWrites::None>;
+    case ColorWrites::All: return kPipeline<kAlpha, kStencil, kDepth, kBlend, ColorWrites::All>;
     case ColorWrites::Some: break;
   }
-  return specialised<kAlpha, kStencil, kDepth, kBlend, ColorWrites::Some>;
+  return kPipeline<kAlpha, kStencil, kDepth, kBlend, ColorWrites::Some>;
 }
 
 template <bool kAlpha, bool kStencil, bool kDepth>
-FragmentFunction byBlend(const FragmentState& s, ColorWrites c) {
+FragmentPipeline byBlend(const FragmentState& s, ColorWrites c) {
   return s.blend.enabled ? byColor<kAlpha, kStencil, kDepth, true>(c) : byColor<kAlpha, kStencil, kDepth, false>(c);
 }
 
 template <bool kAlpha, bool kStencil>
-FragmentFunction byDepth(const FragmentState& s, ColorWrites c) {
+FragmentPipeline byDepth(const FragmentState& s, ColorWrites c) {
   return s.depth.enabled ? byBlend<kAlpha, kStencil, true>(s, c) : byBlend<kAlpha, kStencil, false>(s, c);
 }
 
 template <bool kAlpha>
-FragmentFunction byStencil(const FragmentState& s, ColorWrites c) {
+FragmentPipeline byStencil(const FragmentState& s, ColorWrites c) {
   return s.stencil.enabled ? byDepth<kAlpha, true>(s, c) : byDepth<kAlpha, false>(s, c);
 }
 
 }  // namespace
 
-FragmentFunction chooseFragmentFunction(const FragmentState& s) {
+FragmentPipeline chooseFragmentPipeline(const FragmentState& s) {
   const int written = s.colorMask[0] + s.colorMask[1] + s.colorMask[2] + s.colorMask[3];
   const ColorWrites c = written == 0 ? ColorWrites::None : written == 4 ? ColorWrites::All : ColorWrites::Some;
   return s.alpha.enabled ? byStencil<true>(s, c) : byStencil<false>(s, c);

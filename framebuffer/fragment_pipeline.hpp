@@ -10,8 +10,28 @@ namespace mpr {
 
 using FragmentFunction = FragmentFate (*)(const FragmentState& s, Framebuffer& fb, const Fragment& f);
 
+// Up to kCapacity fragments of one row at consecutive x (x, x + 1, ...), as
+// arrays: the rasterizer fills a span, the pipeline runs it in one call.
+struct FragmentSpan {
+  static constexpr int kCapacity = 64;
+  int x = 0, y = 0, count = 0;
+  std::array<std::uint32_t, kCapacity> depth;
+  std::array<Rgba8, kCapacity> color;
+  std::array<float, kCapacity> alpha;
+};
+
+// Runs the span's fragments in order, exactly as the FragmentFunction would
+// one by one; returns how many were written.
+using SpanFunction = std::uint32_t (*)(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span);
+
+struct FragmentPipeline {
+  FragmentFunction fragment;
+  SpanFunction span;
+};
+
 // The variant of processFragment for `s` (alpha test, stencil test, depth
-// test, blending on or off; colour writes none, all or some channels).
-FragmentFunction chooseFragmentFunction(const FragmentState& s);
+// test, blending on or off; colour writes none, all or some channels), for
+// one fragment and for a span.
+FragmentPipeline chooseFragmentPipeline(const FragmentState& s);
 
 }  // namespace mpr

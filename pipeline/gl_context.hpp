@@ -268,6 +268,9 @@ class GLContext {
   };
   // The per-fragment operations, counted, observed.
   void submitFragment(Fragment& f, FragmentFunction fragmentOp, FragmentTally& tally);
+  // The same for a span of fragments: one call of pipeline.span, or fragment
+  // by fragment in the span's order when an observer is set.
+  void submitSpan(const FragmentSpan& span, const FragmentPipeline& pipeline, FragmentTally& tally);
   // Runs rows(tally, n, k) for k < n, each drawing the rows y with
   // y mod n == k of a triangle whose pixels lie in [x0, x1] x [y0, y1] (n = 1
   // when it is small, threads are off or an observer is set), then sums the
@@ -293,7 +296,7 @@ class GLContext {
   ClearValues clearValues_;
   std::array<float, 4> clearAccumValue_{0, 0, 0, 0};
   FragmentState frag_;
-  FragmentFunction fragmentOp_ = nullptr;  // processFragment specialised for frag_, chosen per draw
+  FragmentPipeline fragmentPipeline_{};  // processFragment specialised for frag_, chosen per draw
 
   // rasterization state
   bool cullEnabled_ = false;

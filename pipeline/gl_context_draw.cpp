@@ -10,6 +10,7 @@
 #include "pipeline/gl_context.hpp"
 #include "pipeline/llvmpipe_depth.hpp"
 #include "pipeline/mesa_matrix_inverse.hpp"
+#include "pipeline/span_shading.hpp"
 #include "util/transforms.hpp"
 #include "raster/triangle_rasterizer.hpp"
 
@@ -328,7 +329,7 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
   // The state cannot change within a draw: the per-fragment function is
   // chosen once, and one set of llvmpipe planes is reused (no allocation per
   // triangle once it has grown).
-  fragmentOp_ = chooseFragmentFunction(frag_);
+  fragmentPipeline_ = chooseFragmentPipeline(frag_);
   LlvmpipeDepth depth{window, &userPlanes, {}};
   for (const AssembledTriangle& t : tris) {
     std::array<ClipVertex, 3> tri = {processed[t.v[0]], processed[t.v[1]], processed[t.v[2]]};
@@ -397,6 +398,18 @@ inline void GLContext::submitFragment(Fragment& f, FragmentFunction fragmentOp, 
     return;
   }
   if (fragmentOp(frag_, fb_, f) == FragmentFate::Written) ++tally.written;
+}
+
+inline void GLContext::submitSpan(const FragmentSpan& span, const FragmentPipeline& pipeline, FragmentTally& tally) {
+  if (fragmentObserver) {  // fragment by fragment, in the span's order, each one seen
+    for (int i = 0; i < span.count; ++i) {
+      Fragment f{span.x + i, span.y, span.depth[i], span.color[i], span.alpha[i]};
+      submitFragment(f, pipeline.fragment, tally);
+    }
+    return;
+  }
+  tally.tested += static_cast<std::uint64_t>(span.count);
+  tally.written += pipeline.span(frag_, fb_, span);
 }
 
 void GLContext::setThreads(int threads) {
@@ -481,58 +494,50 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   const LlvmpipeDepth& depthPlanes = depth.triangles.empty() ? fallback : depth;
   // Coverage is decided on the snapped vertices; colours are interpolated on
   // the unsnapped window positions, as llvmpipe sets up its planes (depth
-  // follows llvmpipe's own arithmetic, see LlvmpipeDepth).
-  const double ex1 = xWin[1] - xWin[0], ey1 = yWin[1] - yWin[0];
-  const double ex2 = xWin[2] - xWin[0], ey2 = yWin[2] - yWin[0];
-  const double exactArea = ex1 * ey2 - ex2 * ey1;
-  const bool useSnapped = !(std::fabs(exactArea) > 0.0);  // degenerate before snapping
-  const double snappedArea = static_cast<double>(area > 0 ? area : -area);  // the weights' sum
-  const float depthMaxF = static_cast<float>(fb_.profile().depthMax());
-  const int fbHeight = fb_.height();
-  const bool needColor = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] ||
-                         frag_.colorMask[3] || frag_.alpha.enabled;
-  const bool needDepth = frag_.depth.enabled;
-  const FragmentFunction fragmentOp = fragmentOp_;  // chosen by drawProcessed for this draw
-
-  const auto pixel = [&](FragmentTally& tally, int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) {
-    // Barycentric weights of the pixel centre.
-    double b0, b1, b2;
-    if (useSnapped) {
-      b0 = static_cast<double>(w0) / snappedArea;
-      b1 = static_cast<double>(w1) / snappedArea;
-      b2 = static_cast<double>(w2) / snappedArea;
-    } else {
-      const double px = x + 0.5 - xWin[0], py = y + 0.5 - yWin[0];
-      b1 = (px * ey2 - py * ex2) / exactArea;
-      b2 = (py * ex1 - px * ey1) / exactArea;
-      b0 = 1.0 - b1 - b2;
-    }
-    Fragment f{x, y, 0, Rgba8{0, 0, 0, 0}, 0.0f};
-    if (needDepth) {
-      // llvmpipe's plane, evaluated as its fragment shader does, then
-      // quantised as it converts to a unorm buffer: the float z times the
-      // float maximum, a single-precision product, rounded to nearest even.
-      float z = 0.0f;
-      if (windowMap_) {
-        const double q0 = b0 * mapInvQ[0], q1 = b1 * mapInvQ[1], q2 = b2 * mapInvQ[2];
-        z = std::clamp(static_cast<float>((q0 * mapZ[0] + q1 * mapZ[1] + q2 * mapZ[2]) / (q0 + q1 + q2)), 0.0f, 1.0f);
-      } else if (!depthPlanes.triangles.empty()) {
-        z = std::clamp(depthPlanes.at(x, fbHeight - 1 - y), 0.0f, 1.0f);
+  // follows llvmpipe's own arithmetic, see LlvmpipeDepth). All of it is set
+  // up here once; shadeSpan does the per-pixel part a row span at a time.
+  TriangleShading t;
+  t.ex1 = xWin[1] - xWin[0];
+  t.ey1 = yWin[1] - yWin[0];
+  t.ex2 = xWin[2] - xWin[0];
+  t.ey2 = yWin[2] - yWin[0];
+  t.xWin0 = xWin[0];
+  t.yWin0 = yWin[0];
+  t.exactArea = t.ex1 * t.ey2 - t.ex2 * t.ey1;
+  t.useSnapped = !(std::fabs(t.exactArea) > 0.0);  // degenerate before snapping
+  t.snappedArea = static_cast<double>(area > 0 ? area : -area);  // the weights' sum
+  t.depthMax = static_cast<float>(fb_.profile().depthMax());
+  t.fbHeight = fb_.height();
+  if (frag_.depth.enabled) {
+    if (windowMap_) {
+      t.depth = TriangleShading::Depth::WindowMap;
+      for (int i = 0; i < 3; ++i) {
+        t.mapZ[i] = mapZ[i];
+        t.mapInvQ[i] = mapInvQ[i];
       }
-      f.depth = static_cast<std::uint32_t>(std::nearbyint(z * depthMaxF));
+    } else if (depthPlanes.triangles.size() == 1) {
+      t.depth = TriangleShading::Depth::OnePlane;
+      t.a0 = depthPlanes.triangles[0].a0;
+      t.dzdx = depthPlanes.triangles[0].dzdx;
+      t.dzdy = depthPlanes.triangles[0].dzdy;
+    } else if (!depthPlanes.triangles.empty()) {
+      t.depth = TriangleShading::Depth::Planes;
+      t.planes = &depthPlanes;
     }
-    if (needColor) {
-      // Perspective-correct: interpolate attr/w and 1/w.
-      const double p0 = b0 * invW[0], p1 = b1 * invW[1], p2 = b2 * invW[2];
-      const double inv = 1.0 / (p0 + p1 + p2);
-      auto interp = [&](int i) {
-        return static_cast<float>((p0 * v[0]->attr[i] + p1 * v[1]->attr[i] + p2 * v[2]->attr[i]) * inv);
-      };
-      shadeColor(f, Vec4(interp(colorOffset), interp(colorOffset + 1), interp(colorOffset + 2), interp(colorOffset + 3)),
-                 fog_.enabled ? interp(8) : 0.0f);
-    }
-    submitFragment(f, fragmentOp, tally);
-  };
+  }
+  t.color = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] || frag_.colorMask[3] ||
+            frag_.alpha.enabled;
+  for (int i = 0; i < 3; ++i) {
+    t.invW[i] = invW[i];
+    for (int c = 0; c < 4; ++c) t.attr[i][c] = v[i]->attr[colorOffset + c];
+    t.attr[i][4] = v[i]->attr[8];
+  }
+  for (int c = 0; c < 5; ++c)
+    t.constant[c] = std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[1][c]) &&
+                    std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[2][c]);
+  if (fog_.enabled) t.fog = &fog_;
+  const FragmentPipeline pipeline = fragmentPipeline_;  // chosen by drawProcessed for this draw
+
   // The triangle's rows within the region, split into bands (forEachBand).
   const std::int64_t top = std::max({snapped[0].y, snapped[1].y, snapped[2].y});
   const std::int64_t bottom = std::min({snapped[0].y, snapped[1].y, snapped[2].y});
@@ -544,9 +549,21 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   forEachBand(std::max<std::int64_t>(bounds.x0, ceilDivSubpixel(left)),
               std::min<std::int64_t>(bounds.x1 - 1, floorDivSubpixel(right)), rowLo, rowHi,
               [&](FragmentTally& tally, int stride, int phase) {
-                rasterizeTriangle(
+                FragmentSpan fragments;  // per share: shares run at once
+                rasterizeTriangleSpans(
                     snapped, bounds,
-                    [&](int x, int y, std::int64_t w0, std::int64_t w1, std::int64_t w2) { pixel(tally, x, y, w0, w1, w2); },
+                    [&](const CoveredSpan& covered) {
+                      // The row in pieces of at most kCapacity, in x order.
+                      for (int done = 0; done < covered.count; done += FragmentSpan::kCapacity) {
+                        fragments.x = covered.x + done;
+                        fragments.y = covered.y;
+                        fragments.count = std::min(FragmentSpan::kCapacity, covered.count - done);
+                        std::array<std::int64_t, 3> w;
+                        for (int i = 0; i < 3; ++i) w[i] = covered.w[i] + done * covered.stepX[i];
+                        shadeSpan(t, w, covered.stepX, fragments);
+                        submitSpan(fragments, pipeline, tally);
+                      }
+                    },
                     stride, phase);
               });
 }
@@ -585,7 +602,7 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
   const bool needColor = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] ||
                          frag_.colorMask[3] || frag_.alpha.enabled;
   const bool needDepth = frag_.depth.enabled;
-  const FragmentFunction fragmentOp = fragmentOp_;
+  const FragmentFunction fragmentOp = fragmentPipeline_.fragment;
   // The region in llvmpipe's y-down rows.
   const int rowLo = fbHeight - region.y1, rowHi = fbHeight - 1 - region.y0;
   for (const LlvmpipeDepth::Triangle& t : depth.triangles) {

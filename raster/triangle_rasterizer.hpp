@@ -46,14 +46,23 @@ inline bool ownsTies(std::int64_t dx, std::int64_t dy) {
   return dy < 0 || (dy == 0 && dx > 0);
 }
 
-// Calls emit(x, y, w0, w1, w2) for every covered pixel inside `clip`, where wi
-// are the (integer) edge-function weights of vertex i; their sum is the doubled
-// area. Degenerate triangles cover nothing. With rowStride n > 1 only the rows
-// y with y mod n == rowPhase are visited (a thread's share of a large
-// triangle, interleaved so that every thread gets as many pixels).
-template <typename Emit>
-void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBounds& clip, Emit&& emit,
-                       int rowStride = 1, int rowPhase = 0) {
+// One row's covered pixels: x, x + 1, ..., x + count - 1 on row y. The
+// edge-function weight of vertex i at pixel x + k is w[i] + k * stepX[i]
+// (vertex order as the caller gave it).
+struct CoveredSpan {
+  int x, y, count;
+  std::array<std::int64_t, 3> w, stepX;
+};
+
+// Calls emitSpan(const CoveredSpan&) for every row's covered pixels inside
+// `clip`, rows bottom to top, where the weights are the (integer) edge
+// functions of vertex i; their sum is the doubled area. Degenerate triangles
+// cover nothing. With rowStride n > 1 only the rows y with y mod n ==
+// rowPhase are visited (a thread's share of a large triangle, interleaved so
+// that every thread gets as many pixels).
+template <typename EmitSpan>
+void rasterizeTriangleSpans(const std::array<SnappedVertex, 3>& vIn, const PixelBounds& clip, EmitSpan&& emitSpan,
+                            int rowStride = 1, int rowPhase = 0) {
   std::array<SnappedVertex, 3> v = vIn;
   std::int64_t area = signedArea2(v[0], v[1], v[2]);
   if (area == 0) return;
@@ -111,18 +120,33 @@ void rasterizeTriangle(const std::array<SnappedVertex, 3>& vIn, const PixelBound
       else if (e[i].stepX < 0) k1 = slack < 0 ? -1 : std::min(k1, slack / -e[i].stepX);
       else if (slack < 0) k1 = -1;
     }
-    for (std::int64_t k = k0; k <= k1; ++k) {
-      const std::int64_t w0 = e[0].rowStart + k * e[0].stepX, w1 = e[1].rowStart + k * e[1].stepX,
-                         w2 = e[2].rowStart + k * e[2].stepX;
-      if (swapped)
-        emit(static_cast<int>(px0 + k), static_cast<int>(py), w0, w2, w1);
-      else
-        emit(static_cast<int>(px0 + k), static_cast<int>(py), w0, w1, w2);
+    if (k0 <= k1) {
+      CoveredSpan span{static_cast<int>(px0 + k0), static_cast<int>(py), static_cast<int>(k1 - k0 + 1), {}, {}};
+      for (int i = 0; i < 3; ++i) {
+        const int to = swapped && i > 0 ? 3 - i : i;  // weights back in the caller's vertex order
+        span.w[to] = e[i].rowStart + k0 * e[i].stepX;
+        span.stepX[to] = e[i].stepX;
+      }
+      emitSpan(span);
     }
     e[0].rowStart += rowStride * e[0].stepY;
     e[1].rowStart += rowStride * e[1].stepY;
     e[2].rowStart += rowStride * e[2].stepY;
   }
+}
+
+// Calls emit(x, y, w0, w1, w2) for every covered pixel inside `clip`, pixel
+// by pixel (the spans of rasterizeTriangleSpans, walked).
+template <typename Emit>
+void rasterizeTriangle(const std::array<SnappedVertex, 3>& v, const PixelBounds& clip, Emit&& emit, int rowStride = 1,
+                       int rowPhase = 0) {
+  rasterizeTriangleSpans(
+      v, clip,
+      [&](const CoveredSpan& s) {
+        for (int k = 0; k < s.count; ++k)
+          emit(s.x + k, s.y, s.w[0] + k * s.stepX[0], s.w[1] + k * s.stepX[1], s.w[2] + k * s.stepX[2]);
+      },
+      rowStride, rowPhase);
 }
 
 }  // namespace mpr

@@ -1,7 +1,8 @@
-// chooseFragmentFunction's variants against processFragment: for every
+// chooseFragmentPipeline's variants against processFragment: for every
 // combination of alpha test, stencil test, depth test, blending and colour
 // write mask (none, all, each single channel), random fragments on random
-// buffers must leave the same fate, colour, depth and stencil, byte for byte.
+// buffers must leave the same fate, colour, depth and stencil, byte for byte,
+// one by one and as spans.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -42,7 +43,7 @@ TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
       s.depth.enabled = (bits & 4) != 0;
       s.blend = {(bits & 8) != 0, BlendFactor::SrcAlpha, BlendFactor::OneMinusDstColor};
       s.colorMask = mask;
-      const FragmentFunction op = chooseFragmentFunction(s);
+      const FragmentFunction op = chooseFragmentPipeline(s).fragment;
       ++variants;
       for (int trial = 0; trial < 200; ++trial) {
         // A fresh random state of the tests for each fragment.
@@ -74,6 +75,61 @@ TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
       }
     }
   EXPECT_EQ(variants, 96);
+}
+
+// A span runs its fragments in order on one row: the same buffers and the
+// same count of written fragments as processFragment one by one (a span
+// from every start column, of every length that fits).
+TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
+  std::mt19937 rng(1994);
+  const std::array<std::array<bool, 4>, 3> masks = {
+      {{false, false, false, false}, {true, true, true, true}, {false, true, false, true}}};
+  int variants = 0;
+  for (int bits = 0; bits < 16; ++bits)
+    for (const auto& mask : masks) {
+      FragmentState s;
+      s.alpha = {(bits & 1) != 0, CompareFunc::Less, 0.5f};
+      s.stencil.enabled = (bits & 2) != 0;
+      s.depth.enabled = (bits & 4) != 0;
+      s.blend = {(bits & 8) != 0, BlendFactor::One, BlendFactor::One};
+      s.colorMask = mask;
+      const SpanFunction op = chooseFragmentPipeline(s).span;
+      ++variants;
+      for (int trial = 0; trial < 100; ++trial) {
+        s.stencil.func = static_cast<CompareFunc>(rng() % 8);
+        s.stencil.ref = rng() & 0xFF;
+        s.stencil.valueMask = rng() & 0xFF;
+        s.stencil.writeMask = rng() & 0xFF;
+        s.stencil.sfail = static_cast<StencilOp>(rng() % 8);
+        s.stencil.dpfail = static_cast<StencilOp>(rng() % 8);
+        s.stencil.dppass = static_cast<StencilOp>(rng() % 8);
+        s.depth.func = static_cast<CompareFunc>(rng() % 8);
+        s.depth.writeMask = (rng() & 1) != 0;
+        Framebuffer expected(kSize, kSize, mesaProfile()), found(kSize, kSize, mesaProfile());
+        std::mt19937 fill(static_cast<unsigned>(trial));
+        fillRandom(expected, fill);
+        fill.seed(static_cast<unsigned>(trial));
+        fillRandom(found, fill);
+        FragmentSpan span;
+        span.x = static_cast<int>(rng() % kSize);
+        span.y = static_cast<int>(rng() % kSize);
+        span.count = 1 + static_cast<int>(rng() % static_cast<unsigned>(kSize - span.x));
+        std::uint32_t want = 0;
+        for (int i = 0; i < span.count; ++i) {
+          span.depth[i] = rng() & 0xFFFFFF;
+          span.color[i] = Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                                static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())};
+          span.alpha[i] = static_cast<float>(rng() % 256) / 255.0f;
+          const Fragment f{span.x + i, span.y, span.depth[i], span.color[i], span.alpha[i]};
+          want += processFragment(s, expected, f) == FragmentFate::Written;
+        }
+        ASSERT_EQ(op(s, found, span), want) << "variant " << bits << " trial " << trial;
+        ASSERT_EQ(found.colorData(), expected.colorData()) << "variant " << bits << " trial " << trial;
+        ASSERT_EQ(found.depthData(), expected.depthData()) << "variant " << bits << " trial " << trial;
+        ASSERT_EQ(found.stencilData(), expected.stencilData()) << "variant " << bits << " trial " << trial;
+      }
+    }
+  EXPECT_EQ(variants, 48);
 }
 
 }  // namespace

@@ -1,0 +1,149 @@
+#include "pipeline/span_shading.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <cmath>
+
+#include "util/cpu_dispatch.hpp"
+
+namespace mpr {
+namespace {
+
+constexpr int kN = FragmentSpan::kCapacity;
+
+// floatToUnorm8 (fragment_ops.hpp) on a clamped channel, written branch-free.
+[[gnu::always_inline]] inline std::uint32_t unorm8(float c) {
+  // c is in [0, 1] or NaN: NaN and 0 give 0, 1 gives 255 (255 * 1 rounds
+  // to itself); below 255, adding and taking off 2^23 rounds to nearest even.
+  const float positive = std::max(0.0f, c);  // (0 < c) ? c : 0
+  return static_cast<std::uint32_t>(static_cast<std::int32_t>((positive * 255.0f + 8388608.0f) - 8388608.0f));
+}
+
+}  // namespace
+
+MPR_CPU_CLONES
+void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, const std::array<std::int64_t, 3>& stepX,
+               FragmentSpan& out) {
+  const int n = out.count;
+  // Barycentric weights of the pixel centres (colour and the window map's
+  // depth need them; llvmpipe's planes do not).
+  alignas(64) double b0[kN], b1[kN], b2[kN];
+  if (!t.color && t.depth != TriangleShading::Depth::WindowMap) {
+  } else if (t.useSnapped) {
+    for (int k = 0; k < n; ++k) {
+      b0[k] = static_cast<double>(w[0] + k * stepX[0]) / t.snappedArea;
+      b1[k] = static_cast<double>(w[1] + k * stepX[1]) / t.snappedArea;
+      b2[k] = static_cast<double>(w[2] + k * stepX[2]) / t.snappedArea;
+    }
+  } else {
+    const double py = out.y + 0.5 - t.yWin0;
+    const double pyEx2 = py * t.ex2, pyEx1 = py * t.ex1;
+    for (int k = 0; k < n; ++k) {
+      const double px = static_cast<double>(out.x + k) + 0.5 - t.xWin0;
+      b1[k] = (px * t.ey2 - pyEx2) / t.exactArea;
+      b2[k] = (pyEx1 - px * t.ey1) / t.exactArea;
+      b0[k] = 1.0 - b1[k] - b2[k];
+    }
+  }
+
+  // Depth: llvmpipe's plane evaluated as its fragment shader does, then
+  // quantised as it converts to a unorm buffer: the float z times the float
+  // maximum, a single-precision product, rounded to nearest even.
+  alignas(64) float z[kN];
+  switch (t.depth) {
+    case TriangleShading::Depth::None:
+      for (int k = 0; k < n; ++k) z[k] = 0.0f;
+      break;
+    case TriangleShading::Depth::WindowMap:
+      for (int k = 0; k < n; ++k) {
+        const double q0 = b0[k] * t.mapInvQ[0], q1 = b1[k] * t.mapInvQ[1], q2 = b2[k] * t.mapInvQ[2];
+        z[k] = static_cast<float>((q0 * t.mapZ[0] + q1 * t.mapZ[1] + q2 * t.mapZ[2]) / (q0 + q1 + q2));
+      }
+      break;
+    case TriangleShading::Depth::OnePlane: {
+      // LlvmpipeDepth::planeAt: two fused multiply-adds.
+      const float rowTerm = static_cast<float>(t.fbHeight - 1 - out.y);
+      for (int k = 0; k < n; ++k)
+        z[k] = std::fma(t.dzdy, rowTerm, std::fma(t.dzdx, static_cast<float>(out.x + k), t.a0));
+      break;
+    }
+    case TriangleShading::Depth::Planes:
+      for (int k = 0; k < n; ++k) z[k] = t.planes->at(out.x + k, t.fbHeight - 1 - out.y);
+      break;
+  }
+  for (int k = 0; k < n; ++k) {
+    // std::clamp(z, 0, 1) * max, rounded: NaN, -0 and below give 0, 1 and above the maximum.
+    const float positive = std::max(0.0f, z[k]);  // (0 < z) ? z : 0
+    const float clamped = std::min(positive, 1.0f);
+    out.depth[k] = static_cast<std::uint32_t>(static_cast<std::int32_t>(roundNonNegative(clamped * t.depthMax)));
+  }
+
+  if (!t.color) {
+    for (int k = 0; k < n; ++k) {
+      out.color[k] = Rgba8{0, 0, 0, 0};
+      out.alpha[k] = 0.0f;
+    }
+    return;
+  }
+  // Perspective-correct: interpolate attr/w and 1/w.
+  alignas(64) float channel[5][kN];
+  const int channels = t.fog ? 5 : 4;
+  // The weights' condition number over the span, max |p0|+|p1|+|p2| over
+  // p0+p1+p2, bounds the rounding error of the interpolation below: at most
+  // about (5 kappa + 2) 2^-53 relative. Where it is below 2^20, a channel
+  // equal at the three vertices interpolates to that float exactly (the
+  // error, under 2^-30, is far from the half ulp of 2^-25 that rounding to
+  // float would need), so it is copied, not computed. Zero's sign may differ;
+  // nothing downstream tells +0 from -0 (clamp, conversion, fog).
+  std::uint32_t wellConditioned = 1;
+  for (int k = 0; k < n; ++k) {
+    const double p0 = b0[k] * t.invW[0], p1 = b1[k] * t.invW[1], p2 = b2[k] * t.invW[2];
+    b0[k] = p0;
+    b1[k] = p1;
+    b2[k] = p2;
+    wellConditioned &= std::fabs(p0) + std::fabs(p1) + std::fabs(p2) <= 0x1p20 * (p0 + p1 + p2);
+  }
+  alignas(64) double inv[kN];
+  bool invDone = false;
+  for (int i = 0; i < channels; ++i) {
+    if (t.constant[i] && wellConditioned) {
+      for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
+      continue;
+    }
+    if (!invDone) {
+      for (int k = 0; k < n; ++k) inv[k] = 1.0 / (b0[k] + b1[k] + b2[k]);
+      invDone = true;
+    }
+    const double a0 = t.attr[0][i], a1 = t.attr[1][i], a2 = t.attr[2][i];
+    for (int k = 0; k < n; ++k) channel[i][k] = static_cast<float>((b0[k] * a0 + b1[k] * a1 + b2[k] * a2) * inv[k]);
+  }
+  if (t.fog) {
+    // GLContext::shadeColor's fog, per fragment (fogFactor may call exp).
+    for (int k = 0; k < n; ++k) {
+      const float factor = t.fog->perFragment ? fogFactor(*t.fog, channel[4][k]) : std::clamp(channel[4][k], 0.0f, 1.0f);
+      const Vec4 fogged =
+          applyFog(*t.fog, factor, Vec4(channel[0][k], channel[1][k], channel[2][k], channel[3][k]));
+      channel[0][k] = fogged.r;
+      channel[1][k] = fogged.g;
+      channel[2][k] = fogged.b;
+      channel[3][k] = fogged.a;
+    }
+  }
+  // Clamped as glm::clamp(c, 0, 1) (NaN kept), then converted.
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < n; ++k) channel[i][k] = std::min(std::max(channel[i][k], 0.0f), 1.0f);
+  // Packed four bytes to a word (Rgba8's order in memory), so the loop stays on lanes.
+  constexpr bool kLittle = std::endian::native == std::endian::little;
+  alignas(64) std::uint32_t bytes[4][kN], packed[kN];
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < n; ++k) bytes[i][k] = unorm8(channel[i][k]);
+  for (int k = 0; k < n; ++k) {
+    packed[k] = bytes[0][k] << (kLittle ? 0 : 24) | bytes[1][k] << (kLittle ? 8 : 16) |
+                bytes[2][k] << (kLittle ? 16 : 8) | bytes[3][k] << (kLittle ? 24 : 0);
+    out.alpha[k] = channel[3][k];
+  }
+  std::memcpy(out.color.data(), packed, sizeof(Rgba8) * static_cast<std::size_t>(n));
+}
+
+}  // namespace mpr

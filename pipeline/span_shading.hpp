@@ -1,0 +1,54 @@
+#pragma once
+// The per-pixel half of drawing a triangle, a row span at a time: the set-up
+// (TriangleShading) is computed once per triangle by GLContext, and
+// shadeSpan turns up to FragmentSpan::kCapacity covered pixels of one row
+// into fragments (depth and colour) with the same arithmetic, pixel for
+// pixel, that a per-pixel loop would do (softpipe's sp_setup.c: coefficients
+// once per triangle, then spans). The loops run over arrays so the compiler
+// can do several pixels per instruction; every operation is exact IEEE, so
+// the bits do not depend on how many it does at once.
+#include <array>
+#include <cstdint>
+
+#include "framebuffer/fragment_pipeline.hpp"
+#include "pipeline/fog.hpp"
+#include "pipeline/llvmpipe_depth.hpp"
+#include "raster/triangle_rasterizer.hpp"
+
+namespace mpr {
+
+struct TriangleShading {
+  // Barycentric weights of a pixel centre: from the snapped edge functions
+  // (w_i / snappedArea) where the unsnapped triangle is degenerate, else
+  // from the unsnapped window positions (exact* below).
+  bool useSnapped = false;
+  double snappedArea = 1.0;
+  double xWin0 = 0.0, yWin0 = 0.0, ex1 = 0.0, ey1 = 0.0, ex2 = 0.0, ey2 = 0.0, exactArea = 1.0;
+
+  // Depth: none (0), the window map's projective weights (mapZ, mapInvQ),
+  // or llvmpipe's planes (one plane evaluated directly; several chosen per
+  // pixel by LlvmpipeDepth::at).
+  enum class Depth : std::uint8_t { None, WindowMap, OnePlane, Planes } depth = Depth::None;
+  std::array<double, 3> mapZ{}, mapInvQ{};
+  float a0 = 0.0f, dzdx = 0.0f, dzdy = 0.0f;  // Depth::OnePlane
+  const LlvmpipeDepth* planes = nullptr;      // Depth::Planes
+  float depthMax = 0.0f;
+  int fbHeight = 0;
+
+  // Colour: perspective-correct interpolation of attr / w; attr[i] holds
+  // the vertex's RGBA (front or back set) and its fog coordinate.
+  bool color = false;
+  std::array<double, 3> invW{};
+  std::array<std::array<float, 5>, 3> attr{};
+  std::array<bool, 5> constant{};  // attr[0][i], attr[1][i], attr[2][i] the same float (bit for bit)
+  const FogState* fog = nullptr;  // null when fog is off
+};
+
+// Fills out.depth, out.color and out.alpha for out.count pixels starting at
+// (out.x, out.y); w and stepX are the covered span's edge functions at out.x
+// (CoveredSpan). Without depth the fragments' depth is 0, without colour
+// their colour and alpha are 0.
+void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w,
+               const std::array<std::int64_t, 3>& stepX, FragmentSpan& out);
+
+}  // namespace mpr
