@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "framebuffer/fragment_span_stages.hpp"
+#include "util/cpu_dispatch.hpp"
 
 namespace mpr {
 namespace {
@@ -64,7 +65,7 @@ constexpr int channelShift(int c) { return std::endian::native == std::endian::l
 // where the fragment-by-fragment run would write them. The pixels of a span
 // are distinct, so no fragment sees another's writes either way.
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
-std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
+MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
   constexpr int N = FragmentSpan::kCapacity;
   const int n = span.count;
   std::uint8_t* const st = &fb.stencil(span.x, span.y);

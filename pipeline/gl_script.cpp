@@ -73,8 +73,10 @@ struct Token {
   int column;  // 1-based
 };
 
-std::vector<Token> tokenize(std::string_view line) {
-  std::vector<Token> out;
+// The line's tokens into `out` (cleared first; its capacity is kept from
+// line to line, so a long script does not allocate per line).
+void tokenize(std::string_view line, std::vector<Token>& out) {
+  out.clear();
   size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
@@ -83,7 +85,55 @@ std::vector<Token> tokenize(std::string_view line) {
     while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') ++i;
     out.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
   }
-  return out;
+}
+
+// A plain decimal, [-]digits[.digits][(e|E)[+|-]digits] with at most 15
+// significant digits written, read the way from_chars reads it but without
+// its general machinery (most numbers a trace holds): the digits are an
+// integer w below 10^15 < 2^53, and where the decimal exponent q (the
+// exponent less the fraction's length) is within [-22, 22], w and 10^|q| are
+// exact doubles and w * 10^q or w / 10^-q, one IEEE operation, is the
+// correctly rounded value from_chars gives (Clinger's fast path). Anything
+// else is left to the general reading.
+std::optional<double> plainShortDecimal(std::string_view t) {
+  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  std::size_t i = 0;
+  const bool negative = !t.empty() && t[0] == '-';
+  if (negative) i = 1;
+  std::uint64_t w = 0;
+  int digits = 0, fraction = 0;
+  bool point = false;
+  for (; i < t.size(); ++i) {
+    const char c = t[i];
+    if (c >= '0' && c <= '9') {
+      if (++digits > 15) return std::nullopt;
+      w = w * 10 + static_cast<std::uint64_t>(c - '0');
+      fraction += point;
+    } else if (c == '.' && !point) {
+      point = true;
+    } else {
+      break;
+    }
+  }
+  if (digits == 0) return std::nullopt;
+  int exponent = 0;
+  if (i < t.size()) {
+    if (t[i] != 'e' && t[i] != 'E') return std::nullopt;
+    ++i;
+    const bool negativeExponent = i < t.size() && t[i] == '-';
+    if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
+    if (i == t.size() || t.size() - i > 3) return std::nullopt;  // no digits, or past the fast path anyway
+    for (; i < t.size(); ++i) {
+      if (t[i] < '0' || t[i] > '9') return std::nullopt;
+      exponent = exponent * 10 + (t[i] - '0');
+    }
+    if (negativeExponent) exponent = -exponent;
+  }
+  const int q = exponent - fraction;
+  if (q < -22 || q > 22) return std::nullopt;
+  const double v = q >= 0 ? static_cast<double>(w) * kPowers[q] : static_cast<double>(w) / kPowers[-q];
+  return negative ? -v : v;
 }
 
 class Parser {
@@ -104,6 +154,7 @@ class Parser {
   }
 
   std::optional<double> parseNumber(std::string_view t) const {
+    if (const auto v = plainShortDecimal(t)) return v;
     // A plain decimal ([-]digits[.digits][e[-]digits]) through from_chars:
     // correctly rounded, as strtod is, so the same double; anything else
     // (a sign '+', hex, a suffix, inf, out of range) takes strtod's path.
@@ -239,7 +290,8 @@ class Parser {
       pos = eol + 1;
       ++lineNo;
       if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      const std::vector<Token> toks = tokenize(line);
+      tokenize(line, tokens_);
+      const std::vector<Token>& toks = tokens_;
       if (toks.empty()) {
         if (eol == text.size()) break;
         continue;
@@ -369,14 +421,23 @@ class Parser {
                                       "@count_fragments, @expect, @expect-picture)");
       }
 
-      const CallSpec* spec = findCall(head.text);
+      // A script repeats its calls (glVertex3f after glVertex3f): the last
+      // one is tried before the table.
+      const CallSpec* spec =
+          lastCall_ && lastCall_->name == head.text ? lastCall_ : (lastCall_ = findCall(head.text));
       if (!spec) {
         const std::string near = closestCallName(head.text);
         fail(lineNo, head.column, "'" + std::string(head.text) + "' is not a call of the GL script call set" +
                                       (near.empty() ? "" : "; did you mean '" + near + "'?"));
       }
       sawCall = true;
-      ScriptCommand cmd;
+      // One command object for every call line: its argument vector keeps
+      // its capacity unless a sink moved it away (a parser that stores).
+      ScriptCommand& cmd = callCommand_;
+      cmd.kind = ScriptCommand::Kind::Call;
+      cmd.args.clear();
+      cmd.label.clear();
+      cmd.probe.reset();
       cmd.line = lineNo;
       cmd.call = spec->call;
       const std::string_view kinds = spec->args;
@@ -610,6 +671,9 @@ class Parser {
   }
 
   std::string file_;
+  std::vector<Token> tokens_;          // the current line's
+  ScriptCommand callCommand_;          // the current call line's (kind Call, no label or probe)
+  const CallSpec* lastCall_ = nullptr;  // the last call's entry
   Mode mode_ = Mode::Store;
   Sink sink_;
   int streamWidth_ = 0, streamHeight_ = 0;

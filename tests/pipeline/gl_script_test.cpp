@@ -2,6 +2,12 @@
 #include <GL/gl.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
 #include "pipeline/gl_script.hpp"
 #include "pipeline/gl_script_runner.hpp"
 
@@ -87,6 +93,47 @@ TEST(GLScript, RunsOnAContextAndReportsGLErrors) {
   EXPECT_EQ(gl.stencilAt(2, 2), 3u);
   EXPECT_EQ(gl.stencilAt(0, 0), 0u);
   EXPECT_EQ(gl.stencilAt(3, 3), 0u);
+}
+
+}  // namespace
+}  // namespace mpr
+
+namespace mpr {
+namespace {
+
+// Numbers are read by a fast path (short plain decimals, Clinger's) and by
+// from_chars/strtod otherwise: every spelling must give strtod's double, bit
+// for bit, whichever path reads it: random digits, points, exponents and
+// signs, across the fast path's edges (15 digits, exponents of +-22).
+TEST(GLScript, NumbersReadAsStrtodReadsThemOnEveryPath) {
+  std::mt19937 rng(1997);
+  std::string text = "@framebuffer 4 4\n";
+  std::vector<std::string> written;
+  for (int i = 0; i < 20000; ++i) {
+    std::string n;
+    if (rng() % 2) n += '-';
+    const int intDigits = static_cast<int>(rng() % 10), fracDigits = static_cast<int>(rng() % 12);
+    for (int d = 0; d < intDigits; ++d) n += static_cast<char>('0' + rng() % 10);
+    if (fracDigits > 0 || rng() % 4 == 0) n += '.';
+    for (int d = 0; d < fracDigits; ++d) n += static_cast<char>('0' + rng() % 10);
+    if (intDigits + fracDigits == 0) n += '7';
+    if (rng() % 3 == 0) {
+      n += rng() % 2 ? 'e' : 'E';
+      const int sign = static_cast<int>(rng() % 3);
+      if (sign == 1) n += '-';
+      if (sign == 2) n += '+';
+      n += std::to_string(rng() % 40);
+    }
+    written.push_back(n);
+    text += "glVertex3f " + n + " 0 0\n";
+  }
+  const Script s = parseScript(text, "numbers.gls");
+  ASSERT_EQ(s.commands.size(), written.size());
+  for (std::size_t i = 0; i < written.size(); ++i) {
+    const double want = std::strtod(written[i].c_str(), nullptr);
+    const double got = s.commands[i].args[0].number;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(want)) << written[i];
+  }
 }
 
 }  // namespace
