@@ -3,13 +3,15 @@
 // the tools alternating within each run so that a machine busy with other
 // work slows them alike; prints per tool the median wall time, the ratio to
 // llvmpipe's median, the median CPU time (user + system) and the peak
-// resident memory (ru_maxrss from wait4).
+// resident memory (ru_maxrss from wait4). A last row, "reader", is the
+// script read and checked alone as both read it (bench/read_gl_script): the
+// floor under both, the part of their times that is not rendering.
 //
 // Usage: compare_mesa [--runs N] [--threads N] [--mpr PATH] [--mesa-gl PATH]
 //                     [--no-softpipe] SCRIPT...
-// --threads N sets LP_NUM_THREADS=N for llvmpipe (its default: a thread a
-// core; MPR draws on one). MPR runs the script with the mesa profile, the
-// buffers OSMesa's context has.
+// --threads N sets LP_NUM_THREADS=N for llvmpipe and --threads N for MPR
+// (both default to a thread a core). MPR runs the script with the mesa
+// profile, the buffers OSMesa's context has.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -83,6 +85,7 @@ int usage() {
 int main(int argc, char** argv) {
   const std::filesystem::path here = std::filesystem::absolute(argv[0]).parent_path();
   std::string mpr = (here.parent_path() / "mpr").string(), mesaGl = (here / "mesa_gl").string(), threads;
+  const std::string reader = (here / "read_gl_script").string();
   int runs = 5;
   bool softpipe = true;
   std::vector<std::string> scripts;
@@ -102,11 +105,15 @@ int main(int argc, char** argv) {
   for (const std::string& script : scripts) {
     std::vector<Tool> tools;
     Tool m{"mpr", {mpr, "gl", "--quiet", "--profile", "mesa"}, {}, {}};
+    if (!threads.empty()) m.argv.insert(m.argv.end(), {"--threads", threads});
     tools.push_back(m);
     Tool lp{"llvmpipe", {mesaGl, "--driver", "llvmpipe"}, {}, {}};
     if (!threads.empty()) lp.env.push_back("LP_NUM_THREADS=" + threads);
     tools.push_back(lp);
     if (softpipe) tools.push_back({"softpipe", {mesaGl, "--driver", "softpipe"}, {}, {}});
+    // The script read and checked as both read it, nothing drawn: the part
+    // of every row above that is not the renderer's.
+    tools.push_back({"reader", {reader}, {}, {}});
     for (int r = 0; r < runs; ++r)
       for (Tool& t : tools) {
         Sample s{};

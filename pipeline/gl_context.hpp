@@ -251,7 +251,9 @@ class GLContext {
   MatrixStack& currentStack();
   void afterMatrixChange();
   void applyColorMaterial();
-  ClipVertex processVertex(const Vertex& v) const;
+  // The vertex through transform and lighting; `lighting` is the draw's
+  // lighting state, whose materials the vertex replaces.
+  ClipVertex processVertex(const Vertex& v, LightingState& lighting) const;
   // pairsSwapped: each two consecutive triangles drawn in the other order (an unclipped quad strip).
   void drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal,
                      bool pairsSwapped = false);
@@ -262,7 +264,6 @@ class GLContext {
   // A triangle Mesa's draw module clips: llvmpipe's fan of it, each pixel its
   // fixed-point edges cover, coloured by the whole triangle's weights.
   void rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
-  void shadeColor(Fragment& f, Vec4 color, float fogCoord) const;  // fog, clamp, to bytes
   struct FragmentTally {  // a band's counts, summed into counters_ after the triangle
     std::uint64_t tested = 0, written = 0;
   };
@@ -275,8 +276,8 @@ class GLContext {
   // y mod n == k of a triangle whose pixels lie in [x0, x1] x [y0, y1] (n = 1
   // when it is small, threads are off or an observer is set), then sums the
   // tallies into counters_.
-  void forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
-                   const std::function<void(FragmentTally&, int, int)>& rows);
+  template <typename Rows>  // Rows: void(FragmentTally&, int n, int k); defined in gl_context_draw.cpp
+  void forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, const Rows& rows);
   // The colours a triangle wound `ccw` (GL window space) takes: 0 front, 4
   // back (two-sided lighting); -1 when culled.
   int facingColorOffset(bool ccw) const;

@@ -125,7 +125,7 @@ void GLContext::rectf(float x1, float y1, float x2, float y2) {
   end();
 }
 
-ClipVertex GLContext::processVertex(const Vertex& v) const {
+ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
   ClipVertex out;
   // Position through the combined matrix, as Mesa's fixed-function program
   // computes it on llvmpipe: each row summed left to right, unfused,
@@ -138,9 +138,7 @@ ClipVertex GLContext::processVertex(const Vertex& v) const {
 
   Vec4 front, back;
   if (lightingEnabled_) {
-    LightingState s = lighting_;
     s.material = blockMaterials_[v.material];
-    s.mesaShininess0Attenuated = mesaShininessZero_;
     if (colorMaterialEnabled_) {
       // The vertex's own colour feeds the tracked material parameter.
       const Vec4 c = v.color;
@@ -224,7 +222,14 @@ void GLContext::end() {
 
   std::vector<ClipVertex> processed;
   processed.reserve(vertices_.size());
-  for (const Vertex& v : vertices_) processed.push_back(processVertex(v));
+  // The lighting state every vertex of the draw shares, copied once (it is
+  // a kilobyte); each vertex sets its own materials in it.
+  LightingState vertexLighting;
+  if (lightingEnabled_) {
+    vertexLighting = lighting_;
+    vertexLighting.mesaShininess0Attenuated = mesaShininessZero_;
+  }
+  for (const Vertex& v : vertices_) processed.push_back(processVertex(v, vertexLighting));
   std::vector<std::size_t> wraps;
   wraps.swap(blockWraps_);
   if (!wraps.empty() && (primitive_ == PrimitiveType::Quads || primitive_ == PrimitiveType::QuadStrip)) {
@@ -373,18 +378,6 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const Llvmpip
   for (size_t i = 1; i + 1 < poly.size(); ++i) rasterizeClippedTriangle(poly[0], poly[i], poly[i + 1], depth);
 }
 
-// Per fragment: inlined into both rasterizers (out of line it cost a tenth of
-// the Table-1 workload).
-inline void GLContext::shadeColor(Fragment& f, Vec4 color, float fogCoord) const {
-  if (fog_.enabled) {
-    const float factor = fog_.perFragment ? fogFactor(fog_, fogCoord) : std::clamp(fogCoord, 0.0f, 1.0f);
-    color = applyFog(fog_, factor, color);
-  }
-  color = clampColor(color);
-  f.color = {floatToUnorm8(color.r), floatToUnorm8(color.g), floatToUnorm8(color.b), floatToUnorm8(color.a)};
-  f.alpha = color.a;
-}
-
 inline void GLContext::submitFragment(Fragment& f, FragmentFunction fragmentOp, FragmentTally& tally) {
   ++tally.tested;
   if (fragmentObserver) {
@@ -416,8 +409,10 @@ void GLContext::setThreads(int threads) {
   pool_ = threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr;
 }
 
-void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
-                            const std::function<void(FragmentTally&, int, int)>& rows) {
+// A template, not a std::function: the per-triangle call would otherwise
+// allocate for the rows' closure.
+template <typename Rows>
+void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, const Rows& rows) {
   // A share of a few thousand pixels a thread pays for waking it.
   constexpr std::int64_t kPixelsPerShare = 16384;
   const std::int64_t height = y1 - y0 + 1, pixels = height * std::max<std::int64_t>(0, x1 - x0 + 1);
@@ -598,16 +593,36 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
       adj[r][c] = m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
     }
   const int fbHeight = fb_.height();
-  const float depthMaxF = static_cast<float>(fb_.profile().depthMax());
-  const bool needColor = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] ||
-                         frag_.colorMask[3] || frag_.alpha.enabled;
-  const bool needDepth = frag_.depth.enabled;
-  const FragmentFunction fragmentOp = fragmentPipeline_.fragment;
+  FanShading shading;
+  shading.depthMax = static_cast<float>(fb_.profile().depthMax());
+  shading.fbHeight = fbHeight;
+  shading.depth = frag_.depth.enabled;
+  shading.color = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] || frag_.colorMask[3] ||
+                  frag_.alpha.enabled;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) shading.adj[r][c] = adj[r][c];
+  shading.vpScaleX = vpScaleX_;
+  shading.vpTransX = vpTransX_;
+  shading.vpScaleY = vpScaleY_;
+  shading.vpTransY = vpTransY_;
+  if (fog_.enabled) shading.fog = &fog_;
+  const FragmentPipeline pipeline = fragmentPipeline_;
   // The region in llvmpipe's y-down rows.
   const int rowLo = fbHeight - region.y1, rowHi = fbHeight - 1 - region.y0;
   for (const LlvmpipeDepth::Triangle& t : depth.triangles) {
     const int colorOffset = facingColorOffset(t.ccwUp);
     if (colorOffset < 0) continue;
+    FanShading fan = shading;
+    fan.a0 = t.a0;
+    fan.dzdx = t.dzdx;
+    fan.dzdy = t.dzdy;
+    for (int i = 0; i < 3; ++i) {
+      for (int c = 0; c < 4; ++c) fan.attr[static_cast<std::size_t>(i)][c] = tri[static_cast<std::size_t>(i)].attr[colorOffset + c];
+      fan.attr[static_cast<std::size_t>(i)][4] = tri[static_cast<std::size_t>(i)].attr[8];
+    }
+    for (int c = 0; c < 5; ++c)
+      fan.constant[c] = std::bit_cast<std::uint32_t>(fan.attr[0][c]) == std::bit_cast<std::uint32_t>(fan.attr[1][c]) &&
+                        std::bit_cast<std::uint32_t>(fan.attr[0][c]) == std::bit_cast<std::uint32_t>(fan.attr[2][c]);
     // Bounds of the pixels whose centres the fixed-point edges can cover
     // (positions are (v - 0.5) * 256: pixel x's centre is at x * 256).
     const std::int64_t minX = std::min({t.fixedX[0], t.fixedX[1], t.fixedX[2]}),
@@ -620,6 +635,8 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
                        y1 = std::min<std::int64_t>(rowHi, floorDivide(maxY, 256) + 1);
     if (x0 > x1 || y0 > y1) continue;
     forEachBand(x0, x1, y0, y1, [&](FragmentTally& tally, int stride, int phase) {
+    FragmentSpan fragments;  // per share: shares run at once
+    std::uint8_t kept[FragmentSpan::kCapacity];
     for (std::int64_t yDown = y0 + ((phase - y0 % stride) % stride + stride) % stride; yDown <= y1; yDown += stride) {
       // The row's span, solved from covers()' half-planes c + dcdy py - dcdx px > 0
       // (px = 256 x) in exact integers: the pixels a test of each would pass.
@@ -632,26 +649,35 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
         else if (a < 0) spanLo = std::max(spanLo, -floorDivide(k - 1, -a));    // -a x >= 1 - k
         else if (!(k > 0)) spanHi = spanLo - 1;
       }
-      for (std::int64_t x = spanLo; x <= spanHi; ++x) {
-        const int y = fbHeight - 1 - static_cast<int>(yDown);
-        Fragment f{static_cast<int>(x), y, 0, Rgba8{0, 0, 0, 0}, 0.0f};
-        if (needDepth) {
-          const float z = std::clamp(LlvmpipeDepth::planeAt(t, static_cast<int>(x), static_cast<int>(yDown)), 0.0f, 1.0f);
-          f.depth = static_cast<std::uint32_t>(std::nearbyint(z * depthMaxF));
+      const int y = fbHeight - 1 - static_cast<int>(yDown);
+      for (std::int64_t from = spanLo; from <= spanHi; from += FragmentSpan::kCapacity) {
+        fragments.x = static_cast<int>(from);
+        fragments.y = y;
+        fragments.count = static_cast<int>(std::min<std::int64_t>(FragmentSpan::kCapacity, spanHi - from + 1));
+        if (shadeFanSpan(fan, fragments, kept)) {
+          submitSpan(fragments, pipeline, tally);
+          continue;
         }
-        if (needColor) {
-          const double xn = (static_cast<double>(x) + 0.5 - vpTransX_) / vpScaleX_;
-          const double yn = (static_cast<double>(y) + 0.5 - vpTransY_) / vpScaleY_;
-          double b[3], sum = 0.0;
-          for (int i = 0; i < 3; ++i) sum += b[i] = adj[i][0] * xn + adj[i][1] * yn + adj[i][2];
-          if (!(std::fabs(sum) > 0.0)) continue;  // the plane seen edge-on: no weights
-          auto interp = [&](int k) {
-            return static_cast<float>((b[0] * tri[0].attr[k] + b[1] * tri[1].attr[k] + b[2] * tri[2].attr[k]) / sum);
-          };
-          shadeColor(f, Vec4(interp(colorOffset), interp(colorOffset + 1), interp(colorOffset + 2), interp(colorOffset + 3)),
-                     fog_.enabled ? interp(8) : 0.0f);
+        // Pixels where the plane is seen edge-on make no fragment: the
+        // runs between them go on as spans of their own, in x order.
+        const FragmentSpan whole = fragments;
+        for (int k = 0; k < whole.count;) {
+          if (!kept[k]) {
+            ++k;
+            continue;
+          }
+          int end = k;
+          while (end < whole.count && kept[end]) ++end;
+          fragments.x = whole.x + k;
+          fragments.count = end - k;
+          for (int i = k; i < end; ++i) {
+            fragments.depth[static_cast<std::size_t>(i - k)] = whole.depth[static_cast<std::size_t>(i)];
+            fragments.color[static_cast<std::size_t>(i - k)] = whole.color[static_cast<std::size_t>(i)];
+            fragments.alpha[static_cast<std::size_t>(i - k)] = whole.alpha[static_cast<std::size_t>(i)];
+          }
+          submitSpan(fragments, pipeline, tally);
+          k = end;
         }
-        submitFragment(f, fragmentOp, tally);
       }
     }
     });

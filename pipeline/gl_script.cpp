@@ -198,7 +198,10 @@ class Parser {
     if (kind == 'n') kind = 'i';
     ScriptArg a;
     a.column = tok.column;
-    a.text = std::string(tok.text);
+    // The text as written, kept with the command (a checking pass keeps no
+    // command, so it copies none); messages quote the token itself.
+    if (mode_ != Mode::Check) a.text = std::string(tok.text);
+    const std::string_view text = tok.text;
     // Built only for a message: an argument that parses costs no string.
     struct Where {
       int index;
@@ -208,23 +211,23 @@ class Parser {
     const bool isName = tok.text.rfind("GL_", 0) == 0;
     if (isName && kind != 'b') {
       const auto v = glEnumValue(tok.text);
-      if (!v) fail(line, tok.column, "unknown GL enumerant '" + a.text + "' (" + std::string(where) + ")");
+      if (!v) fail(line, tok.column, "unknown GL enumerant '" + std::string(text) + "' (" + std::string(where) + ")");
       if (kind == 'z' && *v != GL_TRUE && *v != GL_FALSE)
-        fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
-      if (kind == 'u') fail(line, tok.column, std::string(where) + " is an unsigned byte (0..255), not " + a.text);
+        fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + std::string(text));
+      if (kind == 'u') fail(line, tok.column, std::string(where) + " is an unsigned byte (0..255), not " + std::string(text));
       a.bits = *v;
       a.number = *v;
       return a;
     }
     switch (kind) {
       case 'e':
-        fail(line, tok.column, std::string(where) + " is an enum: expected a GL_ name, got '" + a.text + "'");
+        fail(line, tok.column, std::string(where) + " is an enum: expected a GL_ name, got '" + std::string(text) + "'");
       case 'b': {
         std::uint32_t bits = 0;
         if (!isName) {
           const auto n = parseInteger(tok.text);
           if (!n || *n < 0 || *n > 0xFFFFFFFFLL)
-            fail(line, tok.column, std::string(where) + " is a bitfield: GL names joined by '|', got '" + a.text + "'");
+            fail(line, tok.column, std::string(where) + " is a bitfield: GL names joined by '|', got '" + std::string(text) + "'");
           bits = static_cast<std::uint32_t>(*n);
         } else {
           size_t start = 0;
@@ -248,20 +251,20 @@ class Parser {
       case 'u':
       case 'z': {
         const auto n = parseInteger(tok.text);
-        if (!n) fail(line, tok.column, std::string(where) + " is an integer: expected a decimal or 0x literal, got '" + a.text + "'");
+        if (!n) fail(line, tok.column, std::string(where) + " is an integer: expected a decimal or 0x literal, got '" + std::string(text) + "'");
         if (kind == 'u' && (*n < 0 || *n > 255))
-          fail(line, tok.column, std::string(where) + " is an unsigned byte: " + a.text + " is outside 0..255");
+          fail(line, tok.column, std::string(where) + " is an unsigned byte: " + std::string(text) + " is outside 0..255");
         if (kind == 'z' && *n != 0 && *n != 1)
-          fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + a.text);
+          fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + std::string(text));
         if (*n < -2147483648LL || *n > 4294967295LL)
-          fail(line, tok.column, std::string(where) + ": " + a.text + " does not fit in 32 bits");
+          fail(line, tok.column, std::string(where) + ": " + std::string(text) + " does not fit in 32 bits");
         a.bits = static_cast<std::uint32_t>(*n);
         a.number = static_cast<double>(*n);
         return a;
       }
       default: {  // f, m, v
         const auto v = parseNumber(tok.text);
-        if (!v) fail(line, tok.column, std::string(where) + " is a number: expected a C literal, got '" + a.text + "'");
+        if (!v) fail(line, tok.column, std::string(where) + " is a number: expected a C literal, got '" + std::string(text) + "'");
         a.number = *v;
         return a;
       }
@@ -465,7 +468,7 @@ class Parser {
           const size_t have = toks.size() - t;
           if (want > 0 && have != static_cast<size_t>(want))
             fail(lineNo, have > static_cast<size_t>(want) ? toks[t + want].column : endColumn,
-                 std::string(spec->name) + " " + cmd.args.back().text + " takes " + std::to_string(want) +
+                 std::string(spec->name) + " " + std::string(toks[t - 1].text) + " takes " + std::to_string(want) +
                      " value" + (want == 1 ? "" : "s") + ", got " + std::to_string(have));
           if (want == 0 && have > 4) fail(lineNo, toks[t + 4].column, std::string(spec->name) + " takes at most 4 values");
           for (; t < toks.size(); ++t) cmd.args.push_back(parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
@@ -474,7 +477,7 @@ class Parser {
           ++t;
         }
       }
-      checkSubset(*spec, cmd, lineNo);
+      checkSubset(*spec, cmd, toks, lineNo);
       if (cmd.call == GLCall::Begin) inBegin = true;
       if (cmd.call == GLCall::End) inBegin = false;
       emit(script, std::move(cmd));
@@ -638,9 +641,13 @@ class Parser {
   }
 
   // GL-valid arguments the Iris subset does not emulate are outside the call set.
-  void checkSubset(const CallSpec& spec, const ScriptCommand& cmd, int line) const {
+  void checkSubset(const CallSpec& spec, const ScriptCommand& cmd, const std::vector<Token>& toks, int line) const {
     auto outside = [&](const ScriptArg& a, const std::string& what) {
-      fail(line, a.column, a.text + " is valid GL but outside the emulated call set (" + what + ")");
+      // The argument as written: its token (a checking pass keeps no text).
+      std::string_view written;
+      for (const Token& t : toks)
+        if (t.column == a.column) written = t.text;
+      fail(line, a.column, std::string(written) + " is valid GL but outside the emulated call set (" + what + ")");
     };
     switch (spec.call) {
       case GLCall::Enable:

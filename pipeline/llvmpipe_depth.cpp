@@ -148,8 +148,6 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
   t.v = {p0, p1, p2};
   for (int i = 0; i < 3; ++i) {
     const LlWindow& a = t.v[i];
-    const LlWindow& b = t.v[(i + 1) % 3];
-    t.edgeLength[i] = std::hypot(static_cast<double>(b.x) - a.x, static_cast<double>(b.y) - a.y);
     t.fixedX[i] = snapLikeLlvmpipe(a.x);
     t.fixedY[i] = snapLikeLlvmpipe(a.y);
   }
@@ -194,7 +192,9 @@ const LlvmpipeDepth::Triangle& LlvmpipeDepth::containing(int x, int yDown) const
       const LlWindow& a = t.v[i];
       const LlWindow& b = t.v[(i + 1) % 3];
       const double ex = static_cast<double>(b.x) - a.x, ey = static_cast<double>(b.y) - a.y;
-      const double length = t.edgeLength[i];
+      // Computed here, not at set-up: a pixel no fan triangle covers is
+      // rare (most triangles never ask), so set-up does not pay for it.
+      const double length = std::hypot(ex, ey);
       if (length > 0.0) nearest = std::min(nearest, (ex * (a.y - py) - ey * (a.x - px)) / length);
     }
     if (nearest > bestDistance) {

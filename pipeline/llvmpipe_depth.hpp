@@ -62,7 +62,6 @@ struct LlvmpipeDepth {
   struct Triangle {
     float a0, dzdx, dzdy;
     std::array<LlWindow, 3> v;  // in the order set up, counter-clockwise in y-down space
-    std::array<double, 3> edgeLength;  // |v[i+1] - v[i]|, for containing (set up once, not per pixel)
     // lp_setup_tri.c calc_fixed_position: (v - 0.5) in 1/256 pixel, and the
     // edges' half-plane constants of do_triangle_ccw (fill rule included).
     std::array<std::int64_t, 3> fixedX, fixedY, c;

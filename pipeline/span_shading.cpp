@@ -20,6 +20,37 @@ constexpr int kN = FragmentSpan::kCapacity;
   return static_cast<std::uint32_t>(static_cast<std::int32_t>((positive * 255.0f + 8388608.0f) - 8388608.0f));
 }
 
+// The colour of a fragment from its interpolated channels: fog, the clamp
+// (glm::clamp(c, 0, 1): std::min and std::max, NaN kept), the bytes.
+[[gnu::always_inline]] inline void finishColor(const FogState* fog, float (&channel)[5][kN], int n, FragmentSpan& out) {
+  if (fog) {
+    // Per fragment (fogFactor may call exp); GL_FASTEST takes the coordinate as the factor.
+    for (int k = 0; k < n; ++k) {
+      const float factor = fog->perFragment ? fogFactor(*fog, channel[4][k]) : std::clamp(channel[4][k], 0.0f, 1.0f);
+      const Vec4 fogged =
+          applyFog(*fog, factor, Vec4(channel[0][k], channel[1][k], channel[2][k], channel[3][k]));
+      channel[0][k] = fogged.r;
+      channel[1][k] = fogged.g;
+      channel[2][k] = fogged.b;
+      channel[3][k] = fogged.a;
+    }
+  }
+  // Clamped as glm::clamp(c, 0, 1) (NaN kept), then converted.
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < n; ++k) channel[i][k] = std::min(std::max(channel[i][k], 0.0f), 1.0f);
+  // Packed four bytes to a word (Rgba8's order in memory), so the loop stays on lanes.
+  constexpr bool kLittle = std::endian::native == std::endian::little;
+  alignas(64) std::uint32_t bytes[4][kN], packed[kN];
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < n; ++k) bytes[i][k] = unorm8(channel[i][k]);
+  for (int k = 0; k < n; ++k) {
+    packed[k] = bytes[0][k] << (kLittle ? 0 : 24) | bytes[1][k] << (kLittle ? 8 : 16) |
+                bytes[2][k] << (kLittle ? 16 : 8) | bytes[3][k] << (kLittle ? 24 : 0);
+    out.alpha[k] = channel[3][k];
+  }
+  std::memcpy(out.color.data(), packed, sizeof(Rgba8) * static_cast<std::size_t>(n));
+}
+
 }  // namespace
 
 MPR_CPU_CLONES
@@ -118,32 +149,67 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
     const double a0 = t.attr[0][i], a1 = t.attr[1][i], a2 = t.attr[2][i];
     for (int k = 0; k < n; ++k) channel[i][k] = static_cast<float>((b0[k] * a0 + b1[k] * a1 + b2[k] * a2) * inv[k]);
   }
-  if (t.fog) {
-    // GLContext::shadeColor's fog, per fragment (fogFactor may call exp).
-    for (int k = 0; k < n; ++k) {
-      const float factor = t.fog->perFragment ? fogFactor(*t.fog, channel[4][k]) : std::clamp(channel[4][k], 0.0f, 1.0f);
-      const Vec4 fogged =
-          applyFog(*t.fog, factor, Vec4(channel[0][k], channel[1][k], channel[2][k], channel[3][k]));
-      channel[0][k] = fogged.r;
-      channel[1][k] = fogged.g;
-      channel[2][k] = fogged.b;
-      channel[3][k] = fogged.a;
-    }
+  finishColor(t.fog, channel, n, out);
+}
+
+MPR_CPU_CLONES
+bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
+  const int n = out.count;
+  const int yDown = t.fbHeight - 1 - out.y;
+  alignas(64) float z[kN];
+  if (t.depth) {
+    // LlvmpipeDepth::planeAt: two fused multiply-adds.
+    const float rowTerm = static_cast<float>(yDown);
+    for (int k = 0; k < n; ++k) z[k] = std::fma(t.dzdy, rowTerm, std::fma(t.dzdx, static_cast<float>(out.x + k), t.a0));
+  } else {
+    for (int k = 0; k < n; ++k) z[k] = 0.0f;
   }
-  // Clamped as glm::clamp(c, 0, 1) (NaN kept), then converted.
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < n; ++k) channel[i][k] = std::min(std::max(channel[i][k], 0.0f), 1.0f);
-  // Packed four bytes to a word (Rgba8's order in memory), so the loop stays on lanes.
-  constexpr bool kLittle = std::endian::native == std::endian::little;
-  alignas(64) std::uint32_t bytes[4][kN], packed[kN];
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < n; ++k) bytes[i][k] = unorm8(channel[i][k]);
   for (int k = 0; k < n; ++k) {
-    packed[k] = bytes[0][k] << (kLittle ? 0 : 24) | bytes[1][k] << (kLittle ? 8 : 16) |
-                bytes[2][k] << (kLittle ? 16 : 8) | bytes[3][k] << (kLittle ? 24 : 0);
-    out.alpha[k] = channel[3][k];
+    const float positive = std::max(0.0f, z[k]);  // std::clamp(z, 0, 1), NaN to 0, as shadeSpan
+    const float clamped = std::min(positive, 1.0f);
+    out.depth[k] = static_cast<std::uint32_t>(static_cast<std::int32_t>(roundNonNegative(clamped * t.depthMax)));
   }
-  std::memcpy(out.color.data(), packed, sizeof(Rgba8) * static_cast<std::size_t>(n));
+  if (!t.color) {
+    for (int k = 0; k < n; ++k) {
+      out.color[k] = Rgba8{0, 0, 0, 0};
+      out.alpha[k] = 0.0f;
+    }
+    return true;
+  }
+  // The weights at the pixel centre in normalised device coordinates.
+  const double yn = (static_cast<double>(out.y) + 0.5 - t.vpTransY) / t.vpScaleY;
+  alignas(64) double b0[kN], b1[kN], b2[kN], sum[kN];
+  const double row0 = t.adj[0][1] * yn, row1 = t.adj[1][1] * yn, row2 = t.adj[2][1] * yn;
+  std::uint32_t all = 1, wellConditioned = 1;
+  for (int k = 0; k < n; ++k) {
+    const double xn = (static_cast<double>(out.x + k) + 0.5 - t.vpTransX) / t.vpScaleX;
+    b0[k] = t.adj[0][0] * xn + row0 + t.adj[0][2];
+    b1[k] = t.adj[1][0] * xn + row1 + t.adj[1][2];
+    b2[k] = t.adj[2][0] * xn + row2 + t.adj[2][2];
+    double s = 0.0;  // summed as the per-pixel loop sums, from 0
+    s += b0[k];
+    s += b1[k];
+    s += b2[k];
+    sum[k] = s;
+    const std::uint32_t keep = std::fabs(s) > 0.0;
+    kept[k] = static_cast<std::uint8_t>(keep);
+    all &= keep;
+    // As in shadeSpan: a channel equal at the vertices is that float
+    // exactly where |b0|+|b1|+|b2| <= 2^20 |sum| (error under 2^-30).
+    wellConditioned &= std::fabs(b0[k]) + std::fabs(b1[k]) + std::fabs(b2[k]) <= 0x1p20 * std::fabs(s);
+  }
+  alignas(64) float channel[5][kN];
+  const int channels = t.fog ? 5 : 4;
+  for (int i = 0; i < channels; ++i) {
+    if (t.constant[i] && wellConditioned) {
+      for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
+      continue;
+    }
+    const double a0 = t.attr[0][i], a1 = t.attr[1][i], a2 = t.attr[2][i];
+    for (int k = 0; k < n; ++k) channel[i][k] = static_cast<float>((b0[k] * a0 + b1[k] * a1 + b2[k] * a2) / sum[k]);
+  }
+  finishColor(t.fog, channel, n, out);
+  return all != 0;
 }
 
 }  // namespace mpr

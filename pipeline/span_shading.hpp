@@ -44,6 +44,29 @@ struct TriangleShading {
   const FogState* fog = nullptr;  // null when fog is off
 };
 
+// A triangle Mesa's draw module clips, drawn as llvmpipe's fan of it
+// (GLContext::rasterizeLlvmpipeFan): depth from one fan triangle's plane,
+// colour from the whole triangle's homogeneous weights at the pixel centre,
+// b = adj (xn, yn, 1), each channel (b . attr) / (b0 + b1 + b2).
+struct FanShading {
+  bool depth = false;  // llvmpipe's plane of the fan triangle (a0, dzdx, dzdy)
+  float a0 = 0.0f, dzdx = 0.0f, dzdy = 0.0f;
+  float depthMax = 0.0f;
+  int fbHeight = 0;
+  bool color = false;
+  double adj[3][3] = {};
+  float vpScaleX = 1.0f, vpTransX = 0.0f, vpScaleY = 1.0f, vpTransY = 0.0f;
+  std::array<std::array<float, 5>, 3> attr{};
+  std::array<bool, 5> constant{};
+  const FogState* fog = nullptr;
+};
+
+// Fills out.count pixels from (out.x, out.y) as rasterizeLlvmpipeFan's
+// per-pixel loop does; with colour, kept[k] is 0 where the triangle's plane
+// is seen edge-on there (weights summing to 0: that pixel makes no
+// fragment). Returns whether every pixel is kept.
+bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept);
+
 // Fills out.depth, out.color and out.alpha for out.count pixels starting at
 // (out.x, out.y); w and stepX are the covered span's edge functions at out.x
 // (CoveredSpan). Without depth the fragments' depth is 0, without colour

@@ -1,0 +1,26 @@
+// Reads a GL script exactly as `mpr gl` and bench/mesa_gl read it (the file
+// read, checked, then streamed command by command) and executes nothing: the
+// floor both sides of bench/compare_mesa share, printed there as "reader".
+// Usage: read_gl_script SCRIPT
+#include <cstdio>
+#include <string>
+
+#include "pipeline/gl_script.hpp"
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: read_gl_script SCRIPT\n");
+    return 2;
+  }
+  try {
+    const std::string text = mpr::readScriptText(argv[1]);
+    const mpr::Script header = mpr::checkScript(text, argv[1]);
+    std::size_t calls = 0;
+    mpr::streamScript(text, header, [&](mpr::ScriptCommand&& c) { calls += c.kind == mpr::ScriptCommand::Kind::Call; });
+    std::printf("%s: %zu calls read\n", argv[1], calls);
+  } catch (const mpr::ScriptError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
