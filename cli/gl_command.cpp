@@ -14,6 +14,7 @@
 #include "pipeline/gl_context.hpp"
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/gl_script.hpp"
+#include "pipeline/script_read_ahead.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "framebuffer/script_probe.hpp"
 
@@ -90,10 +91,14 @@ int runGl(const GlOptions& o) {
   std::size_t errors = 0, calls = 0;
   try {
     ScriptExecutor executor(*gl, hooks);
-    streamScript(text, script, [&](ScriptCommand&& c) {
+    const auto run = [&](ScriptCommand&& c) {
       if (c.kind == ScriptCommand::Kind::Call) ++calls;
       executor.execute(c);
-    });
+    };
+    // With more than one thread the script is parsed ahead on one of them
+    // while the calls run (the same commands in the same order).
+    if (o.threads > 1) streamScriptAhead(text, script, run);
+    else streamScript(text, script, run);
     errors = executor.finish();
   } catch (const ProbeFailed&) {
     return 1;

@@ -1,7 +1,9 @@
 #pragma once
 // --threads for the commands that draw through the emulated pipeline (gl,
 // render, step): a large triangle's rows are split over that many threads
-// (GLContext::setThreads); the bytes are the same at any count.
+// (GLContext::setThreads), and with more than one `mpr gl` parses its script
+// ahead on a thread of its own (streamScriptAhead); the bytes are the same at
+// any count.
 #include <CLI/CLI.hpp>
 
 #include "util/worker_pool.hpp"
@@ -10,7 +12,7 @@ namespace mpr::cli {
 
 inline void addThreadsOption(CLI::App& command, int& threads) {
   threads = hardwareThreads();
-  command.add_option("--threads", threads, "threads a large triangle's rows are drawn on (default: every hardware thread)")
+  command.add_option("--threads", threads, "threads to draw a large triangle's rows on (and, above one, mpr gl reads its script ahead on one; default: every hardware thread)")
       ->check(CLI::Range(1, 256));
 }
 

@@ -2,7 +2,10 @@
 // corpus, its reproducers, the probe scripts (pixels, rectangles, `all`,
 // pictures) and scenes/, the streamed commands are parseScript's, in the
 // same order, field for field, probes placed alike; checkScript keeps no
-// command and reports a bad script's error where parseScript does.
+// command and reports a bad script's error where parseScript does;
+// streamScriptAhead (the parsing on a thread of its own) hands on
+// streamScript's commands, stops when the sink throws and reports a read
+// error after the commands before it.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -10,6 +13,7 @@
 #include <vector>
 
 #include "pipeline/gl_script.hpp"
+#include "pipeline/script_read_ahead.hpp"
 
 namespace mpr {
 namespace {
@@ -90,6 +94,83 @@ TEST(ScriptStream, CheckScriptReportsTheErrorParseScriptReports) {
     EXPECT_FALSE(parseMessage.empty()) << text;
     EXPECT_EQ(checkMessage, parseMessage) << text;
   }
+}
+
+// A script longer than the batches in flight (1024 commands each, four at
+// a time), with directives and probes among the calls.
+std::string longScript(int lines) {
+  std::string text = "@framebuffer 16 16\n";
+  for (int i = 0; i < lines; ++i) {
+    if (i % 997 == 0) text += "@pass p" + std::to_string(i) + "\n";
+    if (i % 1511 == 0) text += "@expect stencil 1 1 0\n";
+    text += "glBegin GL_TRIANGLES\nglVertex3f 0." + std::to_string(i) + " -1e-" + std::to_string(i % 30) +
+            " 0\nglVertex2f 1 0\nglVertex3f 0 1 " + std::to_string(i) + "\nglEnd\n";
+  }
+  return text;
+}
+
+TEST(ScriptStream, AheadHandsOnStreamScriptsCommandsInOrder) {
+  const std::filesystem::path root(MPR_SOURCE_DIR);
+  std::vector<std::pair<std::string, std::string>> scripts = {{"long.gls", longScript(3000)}};
+  for (const char* folder : {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "scenes"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder))
+      if (entry.path().extension() == ".gls")
+        scripts.push_back({entry.path().string(), readScriptText(entry.path().string())});
+  for (const auto& [path, text] : scripts) {
+    const Script header = checkScript(text, path);
+    std::vector<ScriptCommand> plain, ahead, aheadMoved;
+    streamScript(text, header, [&](ScriptCommand&& c) { plain.push_back(c); });
+    // A sink that copies and one that moves the command away.
+    streamScriptAhead(text, header, [&](ScriptCommand&& c) { ahead.push_back(c); });
+    streamScriptAhead(text, header, [&](ScriptCommand&& c) { aheadMoved.push_back(std::move(c)); });
+    ASSERT_EQ(ahead.size(), plain.size()) << path;
+    ASSERT_EQ(aheadMoved.size(), plain.size()) << path;
+    for (std::size_t i = 0; i < plain.size(); ++i) {
+      expectSameCommand(ahead[i], plain[i], path + " command " + std::to_string(i));
+      expectSameCommand(aheadMoved[i], plain[i], path + " command " + std::to_string(i) + " (moved)");
+    }
+  }
+  EXPECT_GT(scripts.size(), 50u);
+}
+
+TEST(ScriptStream, AheadStopsWhenTheSinkThrowsAndReportsReadErrorsAfterTheCommandsBeforeThem) {
+  const std::string text = longScript(3000);
+  const Script header = checkScript(text, "long.gls");
+  struct Stop {};
+  std::size_t seen = 0;
+  EXPECT_THROW(streamScriptAhead(text, header,
+                                 [&](ScriptCommand&&) {
+                                   if (++seen == 10) throw Stop{};
+                                 }),
+               Stop);
+  EXPECT_EQ(seen, 10u);
+
+  // Unchecked text with an error on line 9000: every command before it
+  // reaches the sink, then the error is thrown as streamScript throws it.
+  std::string bad = longScript(2000);
+  std::size_t lines = 0, cut = 0;
+  for (std::size_t i = 0; i < bad.size() && lines < 8999; ++i)
+    if (bad[i] == '\n') ++lines, cut = i + 1;
+  bad = bad.substr(0, cut) + "glVertex3f 0 0 nope\n" + bad.substr(cut);
+  Script badHeader;
+  badHeader.file = "bad.gls";
+  badHeader.width = badHeader.height = 16;
+  std::vector<int> plainLines, aheadLines;
+  std::string plainError, aheadError;
+  try {
+    streamScript(bad, badHeader, [&](ScriptCommand&& c) { plainLines.push_back(c.line); });
+  } catch (const ScriptError& e) {
+    plainError = e.what();
+  }
+  try {
+    streamScriptAhead(bad, badHeader, [&](ScriptCommand&& c) { aheadLines.push_back(c.line); });
+  } catch (const ScriptError& e) {
+    aheadError = e.what();
+  }
+  EXPECT_EQ(plainError, "bad.gls:9000:16: argument 3 of glVertex3f is a number: expected a C literal, got 'nope'");
+  EXPECT_EQ(aheadError, plainError);
+  EXPECT_EQ(aheadLines, plainLines);
+  EXPECT_GT(aheadLines.size(), 5000u);
 }
 
 }  // namespace

@@ -1,0 +1,103 @@
+#include "pipeline/script_read_ahead.hpp"
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace mpr {
+namespace {
+
+constexpr std::size_t kBatchCommands = 1024;  // per hand-over: a lock per thousand commands
+constexpr std::size_t kBatchesInFlight = 4;   // parsed ahead at most: a few thousand commands
+
+// A batch's slots are reused from batch to batch (swapped with the
+// parser's command, so each keeps its argument vector's capacity): no
+// allocation or copy per command.
+struct Batch {
+  std::vector<ScriptCommand> commands;
+  std::size_t size = 0;
+};
+
+struct ReaderStopped {};
+
+}  // namespace
+
+void streamScriptAhead(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<Batch> full;   // parsed, in order
+  std::vector<Batch> spare;  // handed back by the caller's thread
+  bool finished = false, stop = false;
+  std::exception_ptr readError;
+
+  std::thread reader([&] {
+    Batch batch;
+    auto handOver = [&] {
+      std::unique_lock lock(mutex);
+      changed.wait(lock, [&] { return full.size() < kBatchesInFlight || stop; });
+      if (stop) throw ReaderStopped{};
+      full.push_back(std::move(batch));
+      batch = Batch{};
+      if (!spare.empty()) {
+        batch = std::move(spare.back());
+        spare.pop_back();
+      }
+      changed.notify_all();
+    };
+    try {
+      streamScript(text, header, [&](ScriptCommand&& c) {
+        if (batch.size == batch.commands.size()) batch.commands.emplace_back();
+        // Swapped, not copied: the slot takes the command, the parser gets
+        // the slot's old one back to fill next, vectors and all.
+        std::swap(batch.commands[batch.size++], c);
+        if (batch.size == kBatchCommands) handOver();
+      });
+      if (batch.size > 0) handOver();
+    } catch (const ReaderStopped&) {
+    } catch (...) {
+      readError = std::current_exception();
+      try {
+        if (batch.size > 0) handOver();  // the commands before the error still run
+      } catch (const ReaderStopped&) {
+      }
+    }
+    std::lock_guard lock(mutex);
+    finished = true;
+    changed.notify_all();
+  });
+
+  try {
+    for (;;) {
+      Batch batch;
+      {
+        std::unique_lock lock(mutex);
+        changed.wait(lock, [&] { return !full.empty() || finished; });
+        if (full.empty()) break;
+        batch = std::move(full.front());
+        full.pop_front();
+        changed.notify_all();
+      }
+      for (std::size_t i = 0; i < batch.size; ++i) sink(std::move(batch.commands[i]));
+      batch.size = 0;
+      std::lock_guard lock(mutex);
+      spare.push_back(std::move(batch));
+    }
+  } catch (...) {
+    {
+      std::lock_guard lock(mutex);
+      stop = true;
+      changed.notify_all();
+    }
+    reader.join();
+    throw;
+  }
+  reader.join();
+  if (readError) std::rethrow_exception(readError);
+}
+
+}  // namespace mpr
