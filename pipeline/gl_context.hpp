@@ -24,6 +24,7 @@
 #include "pipeline/lighting.hpp"
 #include "pipeline/matrix_stack.hpp"
 #include "pipeline/primitive_assembly.hpp"
+#include "pipeline/span_shading.hpp"
 #include "util/vecmath.hpp"
 #include "util/worker_pool.hpp"
 
@@ -267,6 +268,29 @@ class GLContext {
   struct FragmentTally {  // a band's counts, summed into counters_ after the triangle
     std::uint64_t tested = 0, written = 0;
   };
+  // A triangle set up for drawing: what its rows need, and the rows.
+  struct ClippedTriangleRows {
+    std::array<SnappedVertex, 3> snapped;
+    PixelBounds bounds;
+    TriangleShading shading;
+    std::int64_t rowLo, rowHi, colLo, colHi;  // GL rows and columns its pixels lie in
+  };
+  struct FanTriangleRows {  // one triangle of llvmpipe's fan
+    FanShading shading;
+    LlvmpipeDepth::Triangle triangle;
+    std::int64_t x0, x1, y0, y1;  // columns, and rows in llvmpipe's y-down order
+  };
+  struct DeferredTriangle {
+    ClippedTriangleRows clippedRows;
+    FanTriangleRows fanRows;
+    bool fan;
+  };
+  // The rows y with y mod stride == phase of a set-up triangle.
+  void drawRows(const ClippedTriangleRows& job, FragmentTally& tally, int stride, int phase);
+  void drawRows(const FanTriangleRows& job, FragmentTally& tally, int stride, int phase);
+  void defer(const ClippedTriangleRows& job);
+  void defer(const FanTriangleRows& job);
+  void drawDeferred();  // the deferred triangles, in order, their rows shared over the pool
   // The per-fragment operations, counted, observed.
   void submitFragment(Fragment& f, FragmentFunction fragmentOp, FragmentTally& tally);
   // The same for a span of fragments: one call of pipeline.span, or fragment
@@ -298,6 +322,9 @@ class GLContext {
   std::array<float, 4> clearAccumValue_{0, 0, 0, 0};
   FragmentState frag_;
   FragmentPipeline fragmentPipeline_{};  // processFragment specialised for frag_, chosen per draw
+  bool deferring_ = false;               // this draw's triangles are kept for drawDeferred
+  std::vector<DeferredTriangle> deferred_;
+  std::int64_t deferredPixels_ = 0;      // their bounding boxes' pixels
 
   // rasterization state
   bool cullEnabled_ = false;

@@ -335,6 +335,9 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
   // chosen once, and one set of llvmpipe planes is reused (no allocation per
   // triangle once it has grown).
   fragmentPipeline_ = chooseFragmentPipeline(frag_);
+  // With threads and no observer the triangles are set up here and drawn
+  // together at the end, their rows shared out (drawDeferred).
+  deferring_ = pool_ != nullptr && !fragmentObserver;
   LlvmpipeDepth depth{window, &userPlanes, {}};
   for (const AssembledTriangle& t : tris) {
     std::array<ClipVertex, 3> tri = {processed[t.v[0]], processed[t.v[1]], processed[t.v[2]]};
@@ -347,6 +350,8 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
     if (!windowMap_) depth.add(tri[0].clip, tri[1].clip, tri[2].clip);
     drawTriangle(tri, depth);
   }
+  drawDeferred();
+  deferring_ = false;
 }
 
 void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth) {
@@ -531,36 +536,44 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     t.constant[c] = std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[1][c]) &&
                     std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[2][c]);
   if (fog_.enabled) t.fog = &fog_;
-  const FragmentPipeline pipeline = fragmentPipeline_;  // chosen by drawProcessed for this draw
 
-  // The triangle's rows within the region, split into bands (forEachBand).
+  // The triangle's rows within the region.
+  ClippedTriangleRows job{snapped, bounds, t, 0, 0, 0, 0};
   const std::int64_t top = std::max({snapped[0].y, snapped[1].y, snapped[2].y});
   const std::int64_t bottom = std::min({snapped[0].y, snapped[1].y, snapped[2].y});
   const std::int64_t left = std::min({snapped[0].x, snapped[1].x, snapped[2].x});
   const std::int64_t right = std::max({snapped[0].x, snapped[1].x, snapped[2].x});
-  const std::int64_t rowLo = std::max<std::int64_t>(bounds.y0, ceilDivSubpixel(bottom)),
-                     rowHi = std::min<std::int64_t>(bounds.y1 - 1, floorDivSubpixel(top));
-  if (rowLo > rowHi) return;
-  forEachBand(std::max<std::int64_t>(bounds.x0, ceilDivSubpixel(left)),
-              std::min<std::int64_t>(bounds.x1 - 1, floorDivSubpixel(right)), rowLo, rowHi,
-              [&](FragmentTally& tally, int stride, int phase) {
-                FragmentSpan fragments;  // per share: shares run at once
-                rasterizeTriangleSpans(
-                    snapped, bounds,
-                    [&](const CoveredSpan& covered) {
-                      // The row in pieces of at most kCapacity, in x order.
-                      for (int done = 0; done < covered.count; done += FragmentSpan::kCapacity) {
-                        fragments.x = covered.x + done;
-                        fragments.y = covered.y;
-                        fragments.count = std::min(FragmentSpan::kCapacity, covered.count - done);
-                        std::array<std::int64_t, 3> w;
-                        for (int i = 0; i < 3; ++i) w[i] = covered.w[i] + done * covered.stepX[i];
-                        shadeSpan(t, w, covered.stepX, fragments);
-                        submitSpan(fragments, pipeline, tally);
-                      }
-                    },
-                    stride, phase);
-              });
+  job.rowLo = std::max<std::int64_t>(bounds.y0, ceilDivSubpixel(bottom));
+  job.rowHi = std::min<std::int64_t>(bounds.y1 - 1, floorDivSubpixel(top));
+  job.colLo = std::max<std::int64_t>(bounds.x0, ceilDivSubpixel(left));
+  job.colHi = std::min<std::int64_t>(bounds.x1 - 1, floorDivSubpixel(right));
+  if (job.rowLo > job.rowHi) return;
+  // Several planes are looked up in a set-up that lives for this call only:
+  // such a triangle is drawn now, after what the draw has deferred.
+  if (deferring_ && t.depth != TriangleShading::Depth::Planes) return defer(job);
+  if (deferring_) drawDeferred();
+  forEachBand(job.colLo, job.colHi, job.rowLo, job.rowHi,
+              [&](FragmentTally& tally, int stride, int phase) { drawRows(job, tally, stride, phase); });
+}
+
+void GLContext::drawRows(const ClippedTriangleRows& job, FragmentTally& tally, int stride, int phase) {
+  const FragmentPipeline pipeline = fragmentPipeline_;  // chosen by drawProcessed for this draw
+  FragmentSpan fragments;  // per share: shares run at once
+  rasterizeTriangleSpans(
+      job.snapped, job.bounds,
+      [&](const CoveredSpan& covered) {
+        // The row in pieces of at most kCapacity, in x order.
+        for (int done = 0; done < covered.count; done += FragmentSpan::kCapacity) {
+          fragments.x = covered.x + done;
+          fragments.y = covered.y;
+          fragments.count = std::min(FragmentSpan::kCapacity, covered.count - done);
+          std::array<std::int64_t, 3> w;
+          for (int i = 0; i < 3; ++i) w[i] = covered.w[i] + done * covered.stepX[i];
+          shadeSpan(job.shading, w, covered.stepX, fragments);
+          submitSpan(fragments, pipeline, tally);
+        }
+      },
+      stride, phase);
 }
 
 namespace {
@@ -606,13 +619,13 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
   shading.vpScaleY = vpScaleY_;
   shading.vpTransY = vpTransY_;
   if (fog_.enabled) shading.fog = &fog_;
-  const FragmentPipeline pipeline = fragmentPipeline_;
   // The region in llvmpipe's y-down rows.
   const int rowLo = fbHeight - region.y1, rowHi = fbHeight - 1 - region.y0;
   for (const LlvmpipeDepth::Triangle& t : depth.triangles) {
     const int colorOffset = facingColorOffset(t.ccwUp);
     if (colorOffset < 0) continue;
-    FanShading fan = shading;
+    FanTriangleRows job{shading, t, 0, 0, 0, 0};
+    FanShading& fan = job.shading;
     fan.a0 = t.a0;
     fan.dzdx = t.dzdx;
     fan.dzdy = t.dzdy;
@@ -629,59 +642,117 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
                        maxX = std::max({t.fixedX[0], t.fixedX[1], t.fixedX[2]});
     const std::int64_t minY = std::min({t.fixedY[0], t.fixedY[1], t.fixedY[2]}),
                        maxY = std::max({t.fixedY[0], t.fixedY[1], t.fixedY[2]});
-    const std::int64_t x0 = std::max<std::int64_t>(region.x0, floorDivide(minX, 256)),
-                       x1 = std::min<std::int64_t>(region.x1 - 1, floorDivide(maxX, 256) + 1);
-    const std::int64_t y0 = std::max<std::int64_t>(rowLo, floorDivide(minY, 256)),
-                       y1 = std::min<std::int64_t>(rowHi, floorDivide(maxY, 256) + 1);
-    if (x0 > x1 || y0 > y1) continue;
-    forEachBand(x0, x1, y0, y1, [&](FragmentTally& tally, int stride, int phase) {
-    FragmentSpan fragments;  // per share: shares run at once
-    std::uint8_t kept[FragmentSpan::kCapacity];
-    for (std::int64_t yDown = y0 + ((phase - y0 % stride) % stride + stride) % stride; yDown <= y1; yDown += stride) {
-      // The row's span, solved from covers()' half-planes c + dcdy py - dcdx px > 0
-      // (px = 256 x) in exact integers: the pixels a test of each would pass.
-      std::int64_t spanLo = x0, spanHi = x1;
-      for (int i = 0; i < 3 && spanLo <= spanHi; ++i) {
-        const int j = (i + 1) % 3;
-        const std::int64_t a = (t.fixedY[i] - t.fixedY[j]) * 256;
-        const std::int64_t k = t.c[i] + (t.fixedX[i] - t.fixedX[j]) * (yDown * 256);
-        if (a > 0) spanHi = std::min(spanHi, floorDivide(k - 1, a));           // a x <= k - 1
-        else if (a < 0) spanLo = std::max(spanLo, -floorDivide(k - 1, -a));    // -a x >= 1 - k
-        else if (!(k > 0)) spanHi = spanLo - 1;
+    job.x0 = std::max<std::int64_t>(region.x0, floorDivide(minX, 256));
+    job.x1 = std::min<std::int64_t>(region.x1 - 1, floorDivide(maxX, 256) + 1);
+    job.y0 = std::max<std::int64_t>(rowLo, floorDivide(minY, 256));
+    job.y1 = std::min<std::int64_t>(rowHi, floorDivide(maxY, 256) + 1);
+    if (job.x0 > job.x1 || job.y0 > job.y1) continue;
+    if (deferring_) {
+      defer(job);
+      continue;
+    }
+    // In GL's rows (y up), as every share of rows is counted.
+    forEachBand(job.x0, job.x1, fbHeight - 1 - job.y1, fbHeight - 1 - job.y0,
+                [&](FragmentTally& tally, int stride, int phase) { drawRows(job, tally, stride, phase); });
+  }
+}
+
+void GLContext::drawRows(const FanTriangleRows& job, FragmentTally& tally, int stride, int phase) {
+  const FragmentPipeline pipeline = fragmentPipeline_;
+  const LlvmpipeDepth::Triangle& t = job.triangle;
+  const int fbHeight = fb_.height();
+  FragmentSpan fragments;  // per share: shares run at once
+  std::uint8_t kept[FragmentSpan::kCapacity];
+  // The share's rows are GL rows y = fbHeight - 1 - yDown with y mod stride
+  // == phase (the same rows a clipped triangle's share holds).
+  const std::int64_t wanted = ((fbHeight - 1 - phase) % stride + stride) % stride;  // yDown mod stride
+  for (std::int64_t yDown = job.y0 + ((wanted - job.y0 % stride) % stride + stride) % stride; yDown <= job.y1;
+       yDown += stride) {
+    // The row's span, solved from covers()' half-planes c + dcdy py - dcdx px > 0
+    // (px = 256 x) in exact integers: the pixels a test of each would pass.
+    std::int64_t spanLo = job.x0, spanHi = job.x1;
+    for (int i = 0; i < 3 && spanLo <= spanHi; ++i) {
+      const int j = (i + 1) % 3;
+      const std::int64_t a = (t.fixedY[i] - t.fixedY[j]) * 256;
+      const std::int64_t k = t.c[i] + (t.fixedX[i] - t.fixedX[j]) * (yDown * 256);
+      if (a > 0) spanHi = std::min(spanHi, floorDivide(k - 1, a));           // a x <= k - 1
+      else if (a < 0) spanLo = std::max(spanLo, -floorDivide(k - 1, -a));    // -a x >= 1 - k
+      else if (!(k > 0)) spanHi = spanLo - 1;
+    }
+    const int y = fbHeight - 1 - static_cast<int>(yDown);
+    for (std::int64_t from = spanLo; from <= spanHi; from += FragmentSpan::kCapacity) {
+      fragments.x = static_cast<int>(from);
+      fragments.y = y;
+      fragments.count = static_cast<int>(std::min<std::int64_t>(FragmentSpan::kCapacity, spanHi - from + 1));
+      if (shadeFanSpan(job.shading, fragments, kept)) {
+        submitSpan(fragments, pipeline, tally);
+        continue;
       }
-      const int y = fbHeight - 1 - static_cast<int>(yDown);
-      for (std::int64_t from = spanLo; from <= spanHi; from += FragmentSpan::kCapacity) {
-        fragments.x = static_cast<int>(from);
-        fragments.y = y;
-        fragments.count = static_cast<int>(std::min<std::int64_t>(FragmentSpan::kCapacity, spanHi - from + 1));
-        if (shadeFanSpan(fan, fragments, kept)) {
-          submitSpan(fragments, pipeline, tally);
+      // Pixels where the plane is seen edge-on make no fragment: the
+      // runs between them go on as spans of their own, in x order.
+      const FragmentSpan whole = fragments;
+      for (int k = 0; k < whole.count;) {
+        if (!kept[k]) {
+          ++k;
           continue;
         }
-        // Pixels where the plane is seen edge-on make no fragment: the
-        // runs between them go on as spans of their own, in x order.
-        const FragmentSpan whole = fragments;
-        for (int k = 0; k < whole.count;) {
-          if (!kept[k]) {
-            ++k;
-            continue;
-          }
-          int end = k;
-          while (end < whole.count && kept[end]) ++end;
-          fragments.x = whole.x + k;
-          fragments.count = end - k;
-          for (int i = k; i < end; ++i) {
-            fragments.depth[static_cast<std::size_t>(i - k)] = whole.depth[static_cast<std::size_t>(i)];
-            fragments.color[static_cast<std::size_t>(i - k)] = whole.color[static_cast<std::size_t>(i)];
-            fragments.alpha[static_cast<std::size_t>(i - k)] = whole.alpha[static_cast<std::size_t>(i)];
-          }
-          submitSpan(fragments, pipeline, tally);
-          k = end;
+        int end = k;
+        while (end < whole.count && kept[end]) ++end;
+        fragments.x = whole.x + k;
+        fragments.count = end - k;
+        for (int i = k; i < end; ++i) {
+          fragments.depth[static_cast<std::size_t>(i - k)] = whole.depth[static_cast<std::size_t>(i)];
+          fragments.color[static_cast<std::size_t>(i - k)] = whole.color[static_cast<std::size_t>(i)];
+          fragments.alpha[static_cast<std::size_t>(i - k)] = whole.alpha[static_cast<std::size_t>(i)];
         }
+        submitSpan(fragments, pipeline, tally);
+        k = end;
       }
     }
+  }
+}
+
+// A draw's triangles are set up one after the other and kept (deferring_),
+// then drawn here by row shares: share k holds the rows y with y mod n == k
+// of every triangle, in the triangles' order, so each pixel still sees its
+// fragments in submission order, whatever n is, and small triangles are
+// shared out too (llvmpipe bins its triangles into tiles for the same end).
+void GLContext::defer(const ClippedTriangleRows& job) {
+  deferred_.push_back(DeferredTriangle{job, {}, false});
+  deferredPixels_ += (job.rowHi - job.rowLo + 1) * std::max<std::int64_t>(0, job.colHi - job.colLo + 1);
+}
+
+void GLContext::defer(const FanTriangleRows& job) {
+  deferred_.push_back(DeferredTriangle{{}, job, true});
+  deferredPixels_ += (job.y1 - job.y0 + 1) * (job.x1 - job.x0 + 1);
+}
+
+void GLContext::drawDeferred() {
+  if (deferred_.empty()) return;
+  constexpr std::int64_t kPixelsPerShare = 16384;  // as forEachBand: fewer do not pay for a thread's wake-up
+  const int n = static_cast<int>(std::min<std::int64_t>(pool_ ? pool_->threads() : 1, deferredPixels_ / kPixelsPerShare));
+  const auto share = [&](FragmentTally& tally, int stride, int phase) {
+    for (const DeferredTriangle& d : deferred_) {
+      if (d.fan) drawRows(d.fanRows, tally, stride, phase);
+      else drawRows(d.clippedRows, tally, stride, phase);
+    }
+  };
+  std::vector<FragmentTally> tallies(static_cast<std::size_t>(std::max(n, 1)));
+  if (n <= 1) {
+    share(tallies[0], 1, 0);
+  } else {
+    pool_->run(n, [&](int k) {
+      FragmentTally local;  // on the share's own stack: neighbours in one vector would share a cache line
+      share(local, n, k);
+      tallies[static_cast<std::size_t>(k)] = local;
     });
   }
+  for (const FragmentTally& t : tallies) {  // sums: the same at any split
+    counters_.fragmentsTested += t.tested;
+    counters_.fragmentsWritten += t.written;
+  }
+  deferred_.clear();
+  deferredPixels_ = 0;
 }
 
 }  // namespace mpr
