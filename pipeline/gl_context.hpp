@@ -202,10 +202,11 @@ class GLContext {
   // when unset.
   std::function<void(const FragmentEvent&)> fragmentObserver;
 
-  // Threads a large triangle's rows are split over (util/worker_pool.hpp):
-  // every pixel still sees its fragments in the same order, so the bytes,
-  // counts and observed histories are the same at any count (with an
-  // observer set, a triangle is drawn on one thread). Default 1.
+  // Threads a draw's rows are shared out over (util/worker_pool.hpp,
+  // drawDeferred): every pixel still sees its fragments in the same order, so
+  // the bytes, counts and observed histories are the same at any count (with
+  // an observer set, every triangle is drawn on one thread as it comes).
+  // Default 1.
   void setThreads(int threads);
   int threads() const { return pool_ ? pool_->threads() : 1; }
 
@@ -280,9 +281,8 @@ class GLContext {
     LlvmpipeDepth::Triangle triangle;
     std::int64_t x0, x1, y0, y1;  // columns, and rows in llvmpipe's y-down order
   };
-  struct DeferredTriangle {
-    ClippedTriangleRows clippedRows;
-    FanTriangleRows fanRows;
+  struct DeferredTriangle {  // the index of its set-up in deferredClipped_ or deferredFan_
+    std::uint32_t index;
     bool fan;
   };
   // The rows y with y mod stride == phase of a set-up triangle.
@@ -323,7 +323,9 @@ class GLContext {
   FragmentState frag_;
   FragmentPipeline fragmentPipeline_{};  // processFragment specialised for frag_, chosen per draw
   bool deferring_ = false;               // this draw's triangles are kept for drawDeferred
-  std::vector<DeferredTriangle> deferred_;
+  std::vector<DeferredTriangle> deferred_;  // in submission order
+  std::vector<ClippedTriangleRows> deferredClipped_;
+  std::vector<FanTriangleRows> deferredFan_;
   std::int64_t deferredPixels_ = 0;      // their bounding boxes' pixels
 
   // rasterization state

@@ -718,12 +718,14 @@ void GLContext::drawRows(const FanTriangleRows& job, FragmentTally& tally, int s
 // fragments in submission order, whatever n is, and small triangles are
 // shared out too (llvmpipe bins its triangles into tiles for the same end).
 void GLContext::defer(const ClippedTriangleRows& job) {
-  deferred_.push_back(DeferredTriangle{job, {}, false});
+  deferred_.push_back({static_cast<std::uint32_t>(deferredClipped_.size()), false});
+  deferredClipped_.push_back(job);
   deferredPixels_ += (job.rowHi - job.rowLo + 1) * std::max<std::int64_t>(0, job.colHi - job.colLo + 1);
 }
 
 void GLContext::defer(const FanTriangleRows& job) {
-  deferred_.push_back(DeferredTriangle{{}, job, true});
+  deferred_.push_back({static_cast<std::uint32_t>(deferredFan_.size()), true});
+  deferredFan_.push_back(job);
   deferredPixels_ += (job.y1 - job.y0 + 1) * (job.x1 - job.x0 + 1);
 }
 
@@ -733,8 +735,8 @@ void GLContext::drawDeferred() {
   const int n = static_cast<int>(std::min<std::int64_t>(pool_ ? pool_->threads() : 1, deferredPixels_ / kPixelsPerShare));
   const auto share = [&](FragmentTally& tally, int stride, int phase) {
     for (const DeferredTriangle& d : deferred_) {
-      if (d.fan) drawRows(d.fanRows, tally, stride, phase);
-      else drawRows(d.clippedRows, tally, stride, phase);
+      if (d.fan) drawRows(deferredFan_[d.index], tally, stride, phase);
+      else drawRows(deferredClipped_[d.index], tally, stride, phase);
     }
   };
   std::vector<FragmentTally> tallies(static_cast<std::size_t>(std::max(n, 1)));
@@ -752,6 +754,8 @@ void GLContext::drawDeferred() {
     counters_.fragmentsWritten += t.written;
   }
   deferred_.clear();
+  deferredClipped_.clear();
+  deferredFan_.clear();
   deferredPixels_ = 0;
 }
 

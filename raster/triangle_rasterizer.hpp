@@ -58,7 +58,7 @@ struct CoveredSpan {
 // `clip`, rows bottom to top, where the weights are the (integer) edge
 // functions of vertex i; their sum is the doubled area. Degenerate triangles
 // cover nothing. With rowStride n > 1 only the rows y with y mod n ==
-// rowPhase are visited (a thread's share of a large triangle, interleaved so
+// rowPhase are visited (a thread's share of a draw's rows, interleaved so
 // that every thread gets as many pixels).
 template <typename EmitSpan>
 void rasterizeTriangleSpans(const std::array<SnappedVertex, 3>& vIn, const PixelBounds& clip, EmitSpan&& emitSpan,

@@ -1,8 +1,8 @@
 #pragma once
 // A fork-join pool: run(n, task) calls task(0) .. task(n - 1), task 0 on the
 // caller's thread and the others on the pool's threads, and returns when all
-// are done. The draw path splits a large triangle's rows into bands this way
-// (GLContext::setThreads): each pixel is still written by one task, and
+// are done. The draw path shares a draw's rows out this way
+// (GLContext::drawDeferred): each pixel is still written by one task, and
 // triangles still follow each other, so every pixel sees its fragments in
 // the same order and the bytes do not depend on the thread count.
 #include <condition_variable>

@@ -1,7 +1,7 @@
-# --threads (issue 14): a large triangle's rows are shared out over threads,
-# and the bytes do not move: every sample scene rendered at 400x300 (large
-# enough that full-screen and floor triangles are split: a share is at least
-# 16 384 pixels) at 1, 2, 3 and 8 threads gives the same colour, depth,
+# --threads (issue 14): a draw's triangles have their rows shared out over
+# threads, and the bytes do not move: every sample scene rendered at 400x300
+# (large enough that its draws are split: a share is at least 16 384 pixels
+# of bounding boxes) at 1, 2, 3 and 8 threads gives the same colour, depth,
 # stencil and accumulation buffers and the same fragment counts, and so does
 # every script of the conformance corpus; a pixel's history (mpr step
 # --pixel) is the same too.

@@ -1,4 +1,4 @@
-// The fork-join pool the draw path shares large triangles out with: every
+// The fork-join pool the draw path shares a draw's rows out with: every
 // task runs exactly once per round, on a round of any size up to the pool's
 // threads, round after round.
 #include "util/worker_pool.hpp"
