@@ -302,6 +302,10 @@ class GLContext {
   // tallies into counters_.
   template <typename Rows>  // Rows: void(FragmentTally&, int n, int k); defined in gl_context_draw.cpp
   void forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, const Rows& rows);
+  // rows(tally, n, k) for k < n on the pool (n <= 1: rows(tally, 1, 0) here),
+  // the tallies summed into counters_.
+  template <typename Rows>
+  void runShares(int n, const Rows& rows);
   // The colours a triangle wound `ccw` (GL window space) takes: 0 front, 4
   // back (two-sided lighting); -1 when culled.
   int facingColorOffset(bool ccw) const;

@@ -424,6 +424,11 @@ void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, s
   int n = 1;
   if (pool_ && !fragmentObserver && height > 1)
     n = static_cast<int>(std::min<std::int64_t>({pool_->threads(), height, pixels / kPixelsPerShare}));
+  runShares(n, rows);
+}
+
+template <typename Rows>
+void GLContext::runShares(int n, const Rows& rows) {
   if (n <= 1) {
     FragmentTally tally;
     rows(tally, 1, 0);
@@ -739,20 +744,7 @@ void GLContext::drawDeferred() {
       else drawRows(deferredClipped_[d.index], tally, stride, phase);
     }
   };
-  std::vector<FragmentTally> tallies(static_cast<std::size_t>(std::max(n, 1)));
-  if (n <= 1) {
-    share(tallies[0], 1, 0);
-  } else {
-    pool_->run(n, [&](int k) {
-      FragmentTally local;  // on the share's own stack: neighbours in one vector would share a cache line
-      share(local, n, k);
-      tallies[static_cast<std::size_t>(k)] = local;
-    });
-  }
-  for (const FragmentTally& t : tallies) {  // sums: the same at any split
-    counters_.fragmentsTested += t.tested;
-    counters_.fragmentsWritten += t.written;
-  }
+  runShares(n, share);
   deferred_.clear();
   deferredClipped_.clear();
   deferredFan_.clear();

@@ -20,6 +20,25 @@ constexpr int kN = FragmentSpan::kCapacity;
   return static_cast<std::uint32_t>(static_cast<std::int32_t>((positive * 255.0f + 8388608.0f) - 8388608.0f));
 }
 
+// The depths as llvmpipe quantises them to a unorm buffer: std::clamp(z, 0,
+// 1) (NaN, -0 and below to 0, 1 and above to 1) times the float maximum, a
+// single-precision product, rounded to nearest even.
+[[gnu::always_inline]] inline void storeDepths(const float (&z)[kN], float depthMax, FragmentSpan& out) {
+  for (int k = 0; k < out.count; ++k) {
+    const float positive = std::max(0.0f, z[k]);  // (0 < z) ? z : 0
+    const float clamped = std::min(positive, 1.0f);
+    out.depth[k] = static_cast<std::uint32_t>(static_cast<std::int32_t>(roundNonNegative(clamped * depthMax)));
+  }
+}
+
+// Fragments of a state that writes no colour carry none.
+[[gnu::always_inline]] inline void noColor(FragmentSpan& out) {
+  for (int k = 0; k < out.count; ++k) {
+    out.color[k] = Rgba8{0, 0, 0, 0};
+    out.alpha[k] = 0.0f;
+  }
+}
+
 // The colour of a fragment from its interpolated channels: fog, the clamp
 // (glm::clamp(c, 0, 1): std::min and std::max, NaN kept), the bytes.
 [[gnu::always_inline]] inline void finishColor(const FogState* fog, float (&channel)[5][kN], int n, FragmentSpan& out) {
@@ -79,8 +98,7 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   }
 
   // Depth: llvmpipe's plane evaluated as its fragment shader does, then
-  // quantised as it converts to a unorm buffer: the float z times the float
-  // maximum, a single-precision product, rounded to nearest even.
+  // quantised (storeDepths).
   alignas(64) float z[kN];
   switch (t.depth) {
     case TriangleShading::Depth::None:
@@ -103,20 +121,8 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
       for (int k = 0; k < n; ++k) z[k] = t.planes->at(out.x + k, t.fbHeight - 1 - out.y);
       break;
   }
-  for (int k = 0; k < n; ++k) {
-    // std::clamp(z, 0, 1) * max, rounded: NaN, -0 and below give 0, 1 and above the maximum.
-    const float positive = std::max(0.0f, z[k]);  // (0 < z) ? z : 0
-    const float clamped = std::min(positive, 1.0f);
-    out.depth[k] = static_cast<std::uint32_t>(static_cast<std::int32_t>(roundNonNegative(clamped * t.depthMax)));
-  }
-
-  if (!t.color) {
-    for (int k = 0; k < n; ++k) {
-      out.color[k] = Rgba8{0, 0, 0, 0};
-      out.alpha[k] = 0.0f;
-    }
-    return;
-  }
+  storeDepths(z, t.depthMax, out);
+  if (!t.color) return noColor(out);
   // Perspective-correct: interpolate attr/w and 1/w.
   alignas(64) float channel[5][kN];
   const int channels = t.fog ? 5 : 4;
@@ -164,16 +170,9 @@ bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
   } else {
     for (int k = 0; k < n; ++k) z[k] = 0.0f;
   }
-  for (int k = 0; k < n; ++k) {
-    const float positive = std::max(0.0f, z[k]);  // std::clamp(z, 0, 1), NaN to 0, as shadeSpan
-    const float clamped = std::min(positive, 1.0f);
-    out.depth[k] = static_cast<std::uint32_t>(static_cast<std::int32_t>(roundNonNegative(clamped * t.depthMax)));
-  }
+  storeDepths(z, t.depthMax, out);
   if (!t.color) {
-    for (int k = 0; k < n; ++k) {
-      out.color[k] = Rgba8{0, 0, 0, 0};
-      out.alpha[k] = 0.0f;
-    }
+    noColor(out);
     return true;
   }
   // The weights at the pixel centre in normalised device coordinates.

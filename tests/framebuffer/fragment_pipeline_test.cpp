@@ -17,7 +17,22 @@ namespace {
 
 constexpr int kSize = 8;
 
-void fillRandom(Framebuffer& fb, std::mt19937& rng) {
+// The stencil and depth tests' functions, operations and masks, at random.
+void randomizeTests(FragmentState& s, std::mt19937& rng) {
+  s.stencil.func = static_cast<CompareFunc>(rng() % 8);
+  s.stencil.ref = rng() & 0xFF;
+  s.stencil.valueMask = rng() & 0xFF;
+  s.stencil.writeMask = rng() & 0xFF;
+  s.stencil.sfail = static_cast<StencilOp>(rng() % 8);
+  s.stencil.dpfail = static_cast<StencilOp>(rng() % 8);
+  s.stencil.dppass = static_cast<StencilOp>(rng() % 8);
+  s.depth.func = static_cast<CompareFunc>(rng() % 8);
+  s.depth.writeMask = (rng() & 1) != 0;
+}
+
+// Random buffers, the same for the same seed.
+void fillRandom(Framebuffer& fb, int seed) {
+  std::mt19937 rng(static_cast<unsigned>(seed));
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       fb.stencil(x, y) = static_cast<std::uint8_t>(rng() & 0xFF);
@@ -47,20 +62,10 @@ TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
       ++variants;
       for (int trial = 0; trial < 200; ++trial) {
         // A fresh random state of the tests for each fragment.
-        s.stencil.func = static_cast<CompareFunc>(rng() % 8);
-        s.stencil.ref = rng() & 0xFF;
-        s.stencil.valueMask = rng() & 0xFF;
-        s.stencil.writeMask = rng() & 0xFF;
-        s.stencil.sfail = static_cast<StencilOp>(rng() % 8);
-        s.stencil.dpfail = static_cast<StencilOp>(rng() % 8);
-        s.stencil.dppass = static_cast<StencilOp>(rng() % 8);
-        s.depth.func = static_cast<CompareFunc>(rng() % 8);
-        s.depth.writeMask = (rng() & 1) != 0;
+        randomizeTests(s, rng);
         Framebuffer expected(kSize, kSize, mesaProfile()), found(kSize, kSize, mesaProfile());
-        std::mt19937 fill(static_cast<unsigned>(trial));
-        fillRandom(expected, fill);
-        fill.seed(static_cast<unsigned>(trial));
-        fillRandom(found, fill);
+        fillRandom(expected, trial);
+        fillRandom(found, trial);
         const Fragment f{static_cast<int>(rng() % kSize), static_cast<int>(rng() % kSize),
                          static_cast<std::uint32_t>(rng() & 0xFFFFFF),
                          Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
@@ -96,20 +101,10 @@ TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
       const SpanFunction op = chooseFragmentPipeline(s).span;
       ++variants;
       for (int trial = 0; trial < 100; ++trial) {
-        s.stencil.func = static_cast<CompareFunc>(rng() % 8);
-        s.stencil.ref = rng() & 0xFF;
-        s.stencil.valueMask = rng() & 0xFF;
-        s.stencil.writeMask = rng() & 0xFF;
-        s.stencil.sfail = static_cast<StencilOp>(rng() % 8);
-        s.stencil.dpfail = static_cast<StencilOp>(rng() % 8);
-        s.stencil.dppass = static_cast<StencilOp>(rng() % 8);
-        s.depth.func = static_cast<CompareFunc>(rng() % 8);
-        s.depth.writeMask = (rng() & 1) != 0;
+        randomizeTests(s, rng);
         Framebuffer expected(kSize, kSize, mesaProfile()), found(kSize, kSize, mesaProfile());
-        std::mt19937 fill(static_cast<unsigned>(trial));
-        fillRandom(expected, fill);
-        fill.seed(static_cast<unsigned>(trial));
-        fillRandom(found, fill);
+        fillRandom(expected, trial);
+        fillRandom(found, trial);
         FragmentSpan span;
         span.x = static_cast<int>(rng() % kSize);
         span.y = static_cast<int>(rng() % kSize);
