@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "conformance/buffer_comparison.hpp"
+#include "cli/thread_option.hpp"
 #include "conformance/mesa_replayer.hpp"
 #include "conformance/mpr_replay.hpp"
 #include "conformance/random_script.hpp"
@@ -32,6 +33,7 @@ struct ConformOptions {
   bool strict = false;          // known Mesa departures fail too
   bool print = false;           // print the random scripts, run nothing
   double minWithin = 100.0;     // exit 0 when at least this percentage of scripts is within bounds
+  int threads = 1;              // MPR's (--threads)
 };
 
 // Mesa 22.3's known departures from GL 1.1 that MPR can emulate, by the
@@ -101,7 +103,7 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
     std::cerr << "mpr conform: " << e.what() << "\n";
     return 2;
   }
-  const MprReplay ours = replayOnMpr(script, mesaProfile());
+  const MprReplay ours = replayOnMpr(script, mesaProfile(), 0, o.threads);
   ConformanceBounds bounds = boundsFor(script);
   bounds.strict = o.strict;
   // Where MPR and Mesa disagree, replay MPR with each known departure of
@@ -114,12 +116,12 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
   if (!plainConforms) {
     unsigned allBits = 0;
     for (const EmulatedDeparture& d : kEmulatedDepartures) {
-      departureRuns.emplace_back(d.name, replayOnMpr(script, mesaProfile(), d.bits));
+      departureRuns.emplace_back(d.name, replayOnMpr(script, mesaProfile(), d.bits, o.threads));
       allBits |= d.bits;
     }
     // Last, all of them at once: a vertex lit at w != 1 under an attenuated
     // light shows two departures in one value.
-    departureRuns.emplace_back("combined", replayOnMpr(script, mesaProfile(), allBits));
+    departureRuns.emplace_back("combined", replayOnMpr(script, mesaProfile(), allBits, o.threads));
   }
   const bool colourMaterialBack = !plainConforms && showsColourMaterialBackInBegin(script);
   std::string errorsDeparture;
@@ -286,6 +288,7 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   c->add_flag("-q,--quiet", opts->quiet, "print only scripts out of bounds and the table");
   c->add_flag("--strict", opts->strict, "known Mesa departures from GL 1.1 fail a script too");
   c->add_option("--driver", opts->driver, "Mesa driver: llvmpipe (default) or softpipe");
+  addThreadsOption(*c, opts->threads);
   c->add_option("--report", opts->reportDir,
                  "write summary.json and difference images here (one folder per script when several)");
   c->callback([opts, &exitCode] { exitCode = runConform(*opts); });

@@ -22,9 +22,10 @@ BufferSet collect(const std::string& point, const Framebuffer& fb) {
 
 }  // namespace
 
-MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures) {
+MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures, int threads) {
   GLContext gl(script.width, script.height, profile);
   gl.emulateMesaDepartures(departures);
+  gl.setThreads(threads);
   MprReplay out;
   // Errors are read as the Mesa replayer reads them: after every call outside
   // glBegin/glEnd (glGetError is itself an error inside), so an error raised

@@ -16,7 +16,8 @@ struct MprReplay {
 };
 
 // `departures`: MesaDeparture bits to emulate (pipeline/gl_context.hpp), for
-// telling which differences a known departure of Mesa's explains.
-MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures = 0);
+// telling which differences a known departure of Mesa's explains; `threads`:
+// GLContext::setThreads (the buffers are the same at any count).
+MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures = 0, int threads = 1);
 
 }  // namespace mpr
