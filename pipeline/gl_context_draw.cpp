@@ -541,6 +541,7 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     t.constant[c] = std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[1][c]) &&
                     std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[2][c]);
   if (fog_.enabled) t.fog = &fog_;
+  decideFlatColor(t);
 
   // The triangle's rows within the region.
   ClippedTriangleRows job{snapped, bounds, t, 0, 0, 0, 0};

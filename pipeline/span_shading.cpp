@@ -70,16 +70,38 @@ constexpr int kN = FragmentSpan::kCapacity;
   std::memcpy(out.color.data(), packed, sizeof(Rgba8) * static_cast<std::size_t>(n));
 }
 
+// Whether a span of a flat-coloured triangle (TriangleShading::flatColor)
+// may take the vertices' colour without its exact weights. The weights
+// here are approximate: N * (1 / A) instead of N / A, each within 3 ulp of
+// the exact path's, so every p_i within 11 u rho S of it (u = 2^-53, rho =
+// the 1/w spread, at most 2^20; S = |p0|+|p1|+|p2|). Where this span's
+// approximate condition number is at most 2^20, the exact path's is under
+// 2^21, and there (shadeSpan's bound, (5 kappa + 2) u < 2^-29) each channel
+// interpolates to the vertices' float exactly.
+[[gnu::always_inline]] inline bool flatColorHolds(const TriangleShading& t, const FragmentSpan& out) {
+  const double py = out.y + 0.5 - t.yWin0;
+  const double pyEx2 = py * t.ex2, pyEx1 = py * t.ex1;
+  std::uint32_t holds = 1;
+  for (int k = 0; k < out.count; ++k) {
+    const double px = static_cast<double>(out.x + k) + 0.5 - t.xWin0;
+    const double b1 = (px * t.ey2 - pyEx2) * t.reciprocalArea, b2 = (pyEx1 - px * t.ey1) * t.reciprocalArea;
+    const double p0 = (1.0 - b1 - b2) * t.invW[0], p1 = b1 * t.invW[1], p2 = b2 * t.invW[2];
+    holds &= std::fabs(p0) + std::fabs(p1) + std::fabs(p2) <= 0x1p20 * (p0 + p1 + p2);
+  }
+  return holds != 0;
+}
+
 }  // namespace
 
 MPR_CPU_CLONES
 void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, const std::array<std::int64_t, 3>& stepX,
                FragmentSpan& out) {
   const int n = out.count;
+  const bool flat = t.flatColor && flatColorHolds(t, out);
   // Barycentric weights of the pixel centres (colour and the window map's
-  // depth need them; llvmpipe's planes do not).
+  // depth need them; llvmpipe's planes and a flat colour do not).
   alignas(64) double b0[kN], b1[kN], b2[kN];
-  if (!t.color && t.depth != TriangleShading::Depth::WindowMap) {
+  if (flat || (!t.color && t.depth != TriangleShading::Depth::WindowMap)) {
   } else if (t.useSnapped) {
     for (int k = 0; k < n; ++k) {
       b0[k] = static_cast<double>(w[0] + k * stepX[0]) / t.snappedArea;
@@ -126,6 +148,11 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   // Perspective-correct: interpolate attr/w and 1/w.
   alignas(64) float channel[5][kN];
   const int channels = t.fog ? 5 : 4;
+  if (flat) {
+    for (int i = 0; i < channels; ++i)
+      for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
+    return finishColor(t.fog, channel, n, out);
+  }
   // The weights' condition number over the span, max |p0|+|p1|+|p2| over
   // p0+p1+p2, bounds the rounding error of the interpolation below: at most
   // about (5 kappa + 2) 2^-53 relative. Where it is below 2^20, a channel
@@ -209,6 +236,15 @@ bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
   }
   finishColor(t.fog, channel, n, out);
   return all != 0;
+}
+
+void decideFlatColor(TriangleShading& t) {
+  const int channels = t.fog ? 5 : 4;
+  bool constant = t.color && !t.useSnapped && t.depth != TriangleShading::Depth::WindowMap;
+  for (int i = 0; i < channels; ++i) constant = constant && t.constant[i];
+  const double lo = std::min({t.invW[0], t.invW[1], t.invW[2]}), hi = std::max({t.invW[0], t.invW[1], t.invW[2]});
+  t.flatColor = constant && lo > 0.0 && std::isfinite(hi) && hi <= 0x1p20 * lo;
+  t.reciprocalArea = 1.0 / t.exactArea;
 }
 
 }  // namespace mpr

@@ -41,6 +41,12 @@ struct TriangleShading {
   std::array<double, 3> invW{};
   std::array<std::array<float, 5>, 3> attr{};
   std::array<bool, 5> constant{};  // attr[0][i], attr[1][i], attr[2][i] the same float (bit for bit)
+  // Every channel used is constant, the weights come from the unsnapped
+  // positions with no window map, and 1/w varies by at most 2^20 over the
+  // vertices: a span may then take the colour without exact weights
+  // (flatColorHolds in span_shading.cpp); reciprocalArea = 1 / exactArea.
+  bool flatColor = false;
+  double reciprocalArea = 0.0;
   const FogState* fog = nullptr;  // null when fog is off
 };
 
@@ -66,6 +72,9 @@ struct FanShading {
 // is seen edge-on there (weights summing to 0: that pixel makes no
 // fragment). Returns whether every pixel is kept.
 bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept);
+
+// Sets flatColor and reciprocalArea from the fields above.
+void decideFlatColor(TriangleShading& t);
 
 // Fills out.depth, out.color and out.alpha for out.count pixels starting at
 // (out.x, out.y); w and stepX are the covered span's edge functions at out.x

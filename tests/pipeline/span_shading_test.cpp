@@ -3,7 +3,8 @@
 // pixel with libm's nearbyint): every depth, colour byte and alpha bit for
 // bit, on random triangles that include slivers, wild perspective (1/w over
 // eight decades), channels equal at the three vertices (the copy the
-// condition number allows) and not, fog of every mode, and every depth kind.
+// condition number allows) and not, flat-coloured triangles (their colour
+// taken without exact weights), fog of every mode, and every depth kind.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -145,7 +146,7 @@ TEST(SpanShading, ShadeSpanIsThePerPixelArithmeticOnRandomTriangles) {
   std::mt19937 rng(1994);
   std::uniform_real_distribution<double> pos(0.0, 64.0), logW(-4.0, 4.0), unit(0.0, 1.0);
   FogState fog = randomFog(rng);
-  int copied = 0, computed = 0;
+  int copied = 0, computed = 0, flat = 0;
   for (int trial = 0; trial < 4000; ++trial) {
     TriangleShading t;
     double x[3], y[3];
@@ -181,6 +182,8 @@ TEST(SpanShading, ShadeSpanIsThePerPixelArithmeticOnRandomTriangles) {
       fog = randomFog(rng);
       t.fog = &fog;
     }
+    decideFlatColor(t);
+    flat += t.flatColor;
     FragmentSpan span;
     span.x = static_cast<int>(rng() % 64);
     span.y = static_cast<int>(rng() % 64);
@@ -197,6 +200,7 @@ TEST(SpanShading, ShadeSpanIsThePerPixelArithmeticOnRandomTriangles) {
     (t.color && anyConstant ? copied : computed) += span.count;
   }
   EXPECT_GT(copied, 10000);  // the copied channels were exercised, not only the computed ones
+  EXPECT_GT(flat, 300);      // and flat-coloured triangles
   EXPECT_GT(computed, 10000);
 }
 
