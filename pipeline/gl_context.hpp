@@ -206,8 +206,11 @@ class GLContext {
   // drawDeferred): every pixel still sees its fragments in the same order, so
   // the bytes, counts and observed histories are the same at any count (with
   // an observer set, every triangle is drawn on one thread as it comes).
-  // Default 1.
-  void setThreads(int threads);
+  // Default 1. A share is at least `pixelsPerShare` pixels of bounding
+  // boxes (fewer do not pay for waking a thread; tests set 1 to share out
+  // every draw).
+  static constexpr std::int64_t kPixelsPerShare = 16384;
+  void setThreads(int threads, std::int64_t pixelsPerShare = kPixelsPerShare);
   int threads() const { return pool_ ? pool_->threads() : 1; }
 
  private:
@@ -313,6 +316,7 @@ class GLContext {
 
   Framebuffer fb_;
   std::unique_ptr<WorkerPool> pool_;
+  std::int64_t pixelsPerShare_ = kPixelsPerShare;
   GLenumValue error_ = 0;
   PipelineCounters counters_;
 

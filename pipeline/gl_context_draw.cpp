@@ -410,8 +410,9 @@ inline void GLContext::submitSpan(const FragmentSpan& span, const FragmentPipeli
   tally.written += pipeline.span(frag_, fb_, span);
 }
 
-void GLContext::setThreads(int threads) {
+void GLContext::setThreads(int threads, std::int64_t pixelsPerShare) {
   pool_ = threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr;
+  pixelsPerShare_ = std::max<std::int64_t>(1, pixelsPerShare);
 }
 
 // A template, not a std::function: the per-triangle call would otherwise
@@ -419,11 +420,10 @@ void GLContext::setThreads(int threads) {
 template <typename Rows>
 void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, const Rows& rows) {
   // A share of a few thousand pixels a thread pays for waking it.
-  constexpr std::int64_t kPixelsPerShare = 16384;
   const std::int64_t height = y1 - y0 + 1, pixels = height * std::max<std::int64_t>(0, x1 - x0 + 1);
   int n = 1;
   if (pool_ && !fragmentObserver && height > 1)
-    n = static_cast<int>(std::min<std::int64_t>({pool_->threads(), height, pixels / kPixelsPerShare}));
+    n = static_cast<int>(std::min<std::int64_t>({pool_->threads(), height, pixels / pixelsPerShare_}));
   runShares(n, rows);
 }
 
@@ -737,8 +737,7 @@ void GLContext::defer(const FanTriangleRows& job) {
 
 void GLContext::drawDeferred() {
   if (deferred_.empty()) return;
-  constexpr std::int64_t kPixelsPerShare = 16384;  // as forEachBand: fewer do not pay for a thread's wake-up
-  const int n = static_cast<int>(std::min<std::int64_t>(pool_ ? pool_->threads() : 1, deferredPixels_ / kPixelsPerShare));
+  const int n = static_cast<int>(std::min<std::int64_t>(pool_ ? pool_->threads() : 1, deferredPixels_ / pixelsPerShare_));
   const auto share = [&](FragmentTally& tally, int stride, int phase) {
     for (const DeferredTriangle& d : deferred_) {
       if (d.fan) drawRows(deferredFan_[d.index], tally, stride, phase);
