@@ -185,8 +185,8 @@ void GLContext::clear(std::uint32_t mask) {
   which.stencil = mask & GL_STENCIL_BUFFER_BIT;
   which.accum = mask & GL_ACCUM_BUFFER_BIT;
   const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
-  clearBuffers(fb_, region, which, clearValues_,
-               ClearMasks{frag_.colorMask, frag_.depth.writeMask, frag_.stencil.writeMask});
+  const ClearMasks masks{frag_.colorMask, frag_.depth.writeMask, frag_.stencil.writeMask};
+  forRowBlocks(region, [&](const PixelRect& rows) { clearBuffers(fb_, rows, which, clearValues_, masks); });
 }
 
 void GLContext::colorMask(bool r, bool g, bool b, bool a) {
@@ -399,7 +399,21 @@ void GLContext::accum(GLenumValue op, float value) {
   }
   // Accumulation works on the scissored window, like a clear.
   const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
-  accumulate(fb_, region, a, value, frag_.colorMask);
+  forRowBlocks(region, [&](const PixelRect& rows) { accumulate(fb_, rows, a, value, frag_.colorMask); });
+}
+
+void GLContext::forRowBlocks(const PixelRect& region, const std::function<void(const PixelRect&)>& work) {
+  // Every pixel's result depends on that pixel alone: blocks of rows on
+  // separate threads give the same bytes as the whole region at once.
+  const std::int64_t pixels = std::int64_t{region.x1 - region.x0} * (region.y1 - region.y0);
+  const int n = region.empty() || !pool_ ? 1
+                                         : static_cast<int>(std::min<std::int64_t>(
+                                               {pool_->threads(), region.y1 - region.y0, pixels / pixelsPerShare_}));
+  if (n <= 1) return work(region);
+  pool_->run(n, [&](int k) {
+    const int height = region.y1 - region.y0;
+    work(PixelRect{region.x0, region.y0 + height * k / n, region.x1, region.y0 + height * (k + 1) / n});
+  });
 }
 
 }  // namespace mpr

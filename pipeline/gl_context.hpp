@@ -313,6 +313,9 @@ class GLContext {
   // back (two-sided lighting); -1 when culled.
   int facingColorOffset(bool ccw) const;
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
+  // work(rows) over blocks of the region's rows, on the pool when it is large
+  // (clears and accumulation: a pixel's result is its own).
+  void forRowBlocks(const PixelRect& region, const std::function<void(const PixelRect&)>& work);
 
   Framebuffer fb_;
   std::unique_ptr<WorkerPool> pool_;
