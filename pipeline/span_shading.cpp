@@ -70,6 +70,18 @@ constexpr int kN = FragmentSpan::kCapacity;
   std::memcpy(out.color.data(), packed, sizeof(Rgba8) * static_cast<std::size_t>(n));
 }
 
+// Whether weights w0, w1, w2 (summing to `sum`, or its magnitude) are
+// conditioned well enough for a channel equal at the three vertices to
+// interpolate to that float exactly: |w0|+|w1|+|w2| at most 2^20 times the
+// sum (the rounding error is then under (5 * 2^20 + 2) 2^-53 < 2^-30 of the
+// value, far inside the half ulp, 2^-25, that rounding to float needs), and
+// between 2^-800 and 2^850, so that no product with a float attribute
+// overflows or falls among the subnormals, where the relative bound fails.
+[[gnu::always_inline]] inline std::uint32_t wellConditioned(double w0, double w1, double w2, double sum) {
+  const double s = std::fabs(w0) + std::fabs(w1) + std::fabs(w2);
+  return (s <= 0x1p20 * sum) & (s <= 0x1p850) & (s >= 0x1p-800);
+}
+
 // Whether a span of a flat-coloured triangle (TriangleShading::flatColor)
 // may take the vertices' colour without its exact weights. The weights
 // here are approximate: N * (1 / A) instead of N / A, each within 3 ulp of
@@ -86,7 +98,7 @@ constexpr int kN = FragmentSpan::kCapacity;
     const double px = static_cast<double>(out.x + k) + 0.5 - t.xWin0;
     const double b1 = (px * t.ey2 - pyEx2) * t.reciprocalArea, b2 = (pyEx1 - px * t.ey1) * t.reciprocalArea;
     const double p0 = (1.0 - b1 - b2) * t.invW[0], p1 = b1 * t.invW[1], p2 = b2 * t.invW[2];
-    holds &= std::fabs(p0) + std::fabs(p1) + std::fabs(p2) <= 0x1p20 * (p0 + p1 + p2);
+    holds &= wellConditioned(p0, p1, p2, p0 + p1 + p2);
   }
   return holds != 0;
 }
@@ -153,25 +165,22 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
       for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
     return finishColor(t.fog, channel, n, out);
   }
-  // The weights' condition number over the span, max |p0|+|p1|+|p2| over
-  // p0+p1+p2, bounds the rounding error of the interpolation below: at most
-  // about (5 kappa + 2) 2^-53 relative. Where it is below 2^20, a channel
-  // equal at the three vertices interpolates to that float exactly (the
-  // error, under 2^-30, is far from the half ulp of 2^-25 that rounding to
-  // float would need), so it is copied, not computed. Zero's sign may differ;
-  // nothing downstream tells +0 from -0 (clamp, conversion, fog).
-  std::uint32_t wellConditioned = 1;
+  // Where every pixel's weights are well conditioned (wellConditioned), a
+  // channel equal at the three vertices is copied, not computed: the
+  // interpolation would give that float. Zero's sign may differ; nothing
+  // downstream tells +0 from -0 (clamp, conversion, fog, the alpha test).
+  std::uint32_t allWellConditioned = 1;
   for (int k = 0; k < n; ++k) {
     const double p0 = b0[k] * t.invW[0], p1 = b1[k] * t.invW[1], p2 = b2[k] * t.invW[2];
     b0[k] = p0;
     b1[k] = p1;
     b2[k] = p2;
-    wellConditioned &= std::fabs(p0) + std::fabs(p1) + std::fabs(p2) <= 0x1p20 * (p0 + p1 + p2);
+    allWellConditioned &= wellConditioned(p0, p1, p2, p0 + p1 + p2);
   }
   alignas(64) double inv[kN];
   bool invDone = false;
   for (int i = 0; i < channels; ++i) {
-    if (t.constant[i] && wellConditioned) {
+    if (t.constant[i] && allWellConditioned) {
       for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
       continue;
     }
@@ -206,7 +215,7 @@ bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
   const double yn = (static_cast<double>(out.y) + 0.5 - t.vpTransY) / t.vpScaleY;
   alignas(64) double b0[kN], b1[kN], b2[kN], sum[kN];
   const double row0 = t.adj[0][1] * yn, row1 = t.adj[1][1] * yn, row2 = t.adj[2][1] * yn;
-  std::uint32_t all = 1, wellConditioned = 1;
+  std::uint32_t all = 1, allWellConditioned = 1;
   for (int k = 0; k < n; ++k) {
     const double xn = (static_cast<double>(out.x + k) + 0.5 - t.vpTransX) / t.vpScaleX;
     b0[k] = t.adj[0][0] * xn + row0 + t.adj[0][2];
@@ -220,14 +229,13 @@ bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
     const std::uint32_t keep = std::fabs(s) > 0.0;
     kept[k] = static_cast<std::uint8_t>(keep);
     all &= keep;
-    // As in shadeSpan: a channel equal at the vertices is that float
-    // exactly where |b0|+|b1|+|b2| <= 2^20 |sum| (error under 2^-30).
-    wellConditioned &= std::fabs(b0[k]) + std::fabs(b1[k]) + std::fabs(b2[k]) <= 0x1p20 * std::fabs(s);
+    // As in shadeSpan (the sum's sign does not matter to the bound).
+    allWellConditioned &= wellConditioned(b0[k], b1[k], b2[k], std::fabs(s));
   }
   alignas(64) float channel[5][kN];
   const int channels = t.fog ? 5 : 4;
   for (int i = 0; i < channels; ++i) {
-    if (t.constant[i] && wellConditioned) {
+    if (t.constant[i] && allWellConditioned) {
       for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
       continue;
     }
