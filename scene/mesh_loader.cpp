@@ -47,9 +47,9 @@ void checkOffBody(const std::string& path, std::uint64_t vertices, std::uint64_t
     std::istringstream w(line);
     std::vector<std::string> tokens;
     for (std::string t; w >> t;) tokens.push_back(t);
-    if (lineNo == 1 && !tokens.empty() && tokens[0] == "OFF") tokens.erase(tokens.begin());
+    if (lineNo == 1) continue;  // the OFF line: OpenMesh reads nothing more from it
     if (tokens.empty()) continue;
-    if (counts < 3) {  // the counts may share the OFF line or follow it
+    if (counts < 3) {  // the counts, from the line after OFF on
       counts += tokens.size();
       continue;
     }
@@ -125,10 +125,19 @@ void checkHeaderCounts(const std::string& path, std::uint64_t size) {
     std::string word;
     while (h >> word && word[0] == '#') std::getline(h, word);  // comments
     if (word.size() < 3 || word.compare(word.size() - 3, 3, "OFF") != 0) refuse("does not start with OFF");
-    // A dimension follows nOFF; BINARY OFF has its counts in binary (left to OpenMesh, after the size check).
-    std::string next;
+    // OpenMesh skips the rest of the OFF line and reads the counts from the
+    // lines after it: counts on the OFF line itself would be passed over and
+    // the first vertex read as counts ("OFF 0 0 1" then "-3 0" claimed 2^32
+    // vertices; found by fuzz/mesh_fuzzer). BINARY OFF has its counts in
+    // binary (left to OpenMesh, after the size check); a dimension follows nOFF.
+    std::string magicRest, next;
+    std::getline(h, magicRest);
+    std::istringstream rest(magicRest);
+    if (rest >> next) {
+      if (next == "BINARY") return;
+      refuse("has '" + next + "' on its OFF line: the counts go on the line after it");
+    }
     if (!(h >> next)) refuse("has no vertex and face counts after OFF");
-    if (next == "BINARY") return;
     if (word[0] == 'n') h >> next;
     // Counts are plain decimal digits: "0u20(" is not 0 (OpenMesh read it
     // otherwise and ran out of memory; found by fuzz/mesh_fuzzer).
