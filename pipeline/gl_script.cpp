@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cerrno>
 #include <cmath>
@@ -95,7 +96,10 @@ void tokenize(std::string_view line, std::vector<Token>& out) {
 // exact doubles and w * 10^q or w / 10^-q, one IEEE operation, is the
 // correctly rounded value from_chars gives (Clinger's fast path). Anything
 // else is left to the general reading.
-std::optional<double> plainShortDecimal(std::string_view t) {
+// (A bool and an out-parameter, not std::optional<double>: the optional's
+// flag and value, written apart and read back as one, stalled the store
+// forwarding of every number.)
+bool plainShortDecimal(std::string_view t, double& value) {
   static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                        1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
   std::size_t i = 0;
@@ -107,7 +111,7 @@ std::optional<double> plainShortDecimal(std::string_view t) {
   for (; i < t.size(); ++i) {
     const char c = t[i];
     if (c >= '0' && c <= '9') {
-      if (++digits > 15) return std::nullopt;
+      if (++digits > 15) return false;
       w = w * 10 + static_cast<std::uint64_t>(c - '0');
       fraction += point;
     } else if (c == '.' && !point) {
@@ -116,24 +120,25 @@ std::optional<double> plainShortDecimal(std::string_view t) {
       break;
     }
   }
-  if (digits == 0) return std::nullopt;
+  if (digits == 0) return false;
   int exponent = 0;
   if (i < t.size()) {
-    if (t[i] != 'e' && t[i] != 'E') return std::nullopt;
+    if (t[i] != 'e' && t[i] != 'E') return false;
     ++i;
     const bool negativeExponent = i < t.size() && t[i] == '-';
     if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
-    if (i == t.size() || t.size() - i > 3) return std::nullopt;  // no digits, or past the fast path anyway
+    if (i == t.size() || t.size() - i > 3) return false;  // no digits, or past the fast path anyway
     for (; i < t.size(); ++i) {
-      if (t[i] < '0' || t[i] > '9') return std::nullopt;
+      if (t[i] < '0' || t[i] > '9') return false;
       exponent = exponent * 10 + (t[i] - '0');
     }
     if (negativeExponent) exponent = -exponent;
   }
   const int q = exponent - fraction;
-  if (q < -22 || q > 22) return std::nullopt;
+  if (q < -22 || q > 22) return false;
   const double v = q >= 0 ? static_cast<double>(w) * kPowers[q] : static_cast<double>(w) / kPowers[-q];
-  return negative ? -v : v;
+  value = negative ? -v : v;
+  return true;
 }
 
 class Parser {
@@ -154,7 +159,6 @@ class Parser {
   }
 
   std::optional<double> parseNumber(std::string_view t) const {
-    if (const auto v = plainShortDecimal(t)) return v;
     // A plain decimal ([-]digits[.digits][e[-]digits]) through from_chars:
     // correctly rounded, as strtod is, so the same double; anything else
     // (a sign '+', hex, a suffix, inf, out of range) takes strtod's path.
@@ -203,31 +207,27 @@ class Parser {
     if (mode_ != Mode::Check) a.text = std::string(tok.text);
     const std::string_view text = tok.text;
     // Built only for a message: an argument that parses costs no string.
-    struct Where {
-      int index;
-      std::string_view callName;
-      operator std::string() const { return "argument " + std::to_string(index + 1) + " of " + std::string(callName); }
-    } const where{index, callName};
+    const auto where = [&] { return "argument " + std::to_string(index + 1) + " of " + std::string(callName); };
     const bool isName = tok.text.rfind("GL_", 0) == 0;
     if (isName && kind != 'b') {
       const auto v = glEnumValue(tok.text);
-      if (!v) fail(line, tok.column, "unknown GL enumerant '" + std::string(text) + "' (" + std::string(where) + ")");
+      if (!v) fail(line, tok.column, "unknown GL enumerant '" + std::string(text) + "' (" + where() + ")");
       if (kind == 'z' && *v != GL_TRUE && *v != GL_FALSE)
-        fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + std::string(text));
-      if (kind == 'u') fail(line, tok.column, std::string(where) + " is an unsigned byte (0..255), not " + std::string(text));
+        fail(line, tok.column, where() + " is a boolean: GL_TRUE or GL_FALSE, not " + std::string(text));
+      if (kind == 'u') fail(line, tok.column, where() + " is an unsigned byte (0..255), not " + std::string(text));
       a.bits = *v;
       a.number = *v;
       return a;
     }
     switch (kind) {
       case 'e':
-        fail(line, tok.column, std::string(where) + " is an enum: expected a GL_ name, got '" + std::string(text) + "'");
+        fail(line, tok.column, where() + " is an enum: expected a GL_ name, got '" + std::string(text) + "'");
       case 'b': {
         std::uint32_t bits = 0;
         if (!isName) {
           const auto n = parseInteger(tok.text);
           if (!n || *n < 0 || *n > 0xFFFFFFFFLL)
-            fail(line, tok.column, std::string(where) + " is a bitfield: GL names joined by '|', got '" + std::string(text) + "'");
+            fail(line, tok.column, where() + " is a bitfield: GL names joined by '|', got '" + std::string(text) + "'");
           bits = static_cast<std::uint32_t>(*n);
         } else {
           size_t start = 0;
@@ -237,7 +237,7 @@ class Parser {
             const auto v = glEnumValue(part);
             if (!v)
               fail(line, tok.column + static_cast<int>(start),
-                   "unknown GL enumerant '" + std::string(part) + "' in bitfield (" + std::string(where) + ")");
+                   "unknown GL enumerant '" + std::string(part) + "' in bitfield (" + where() + ")");
             bits |= *v;
             if (bar == std::string_view::npos) break;
             start = bar + 1;
@@ -251,20 +251,21 @@ class Parser {
       case 'u':
       case 'z': {
         const auto n = parseInteger(tok.text);
-        if (!n) fail(line, tok.column, std::string(where) + " is an integer: expected a decimal or 0x literal, got '" + std::string(text) + "'");
+        if (!n) fail(line, tok.column, where() + " is an integer: expected a decimal or 0x literal, got '" + std::string(text) + "'");
         if (kind == 'u' && (*n < 0 || *n > 255))
-          fail(line, tok.column, std::string(where) + " is an unsigned byte: " + std::string(text) + " is outside 0..255");
+          fail(line, tok.column, where() + " is an unsigned byte: " + std::string(text) + " is outside 0..255");
         if (kind == 'z' && *n != 0 && *n != 1)
-          fail(line, tok.column, std::string(where) + " is a boolean: GL_TRUE or GL_FALSE, not " + std::string(text));
+          fail(line, tok.column, where() + " is a boolean: GL_TRUE or GL_FALSE, not " + std::string(text));
         if (*n < -2147483648LL || *n > 4294967295LL)
-          fail(line, tok.column, std::string(where) + ": " + std::string(text) + " does not fit in 32 bits");
+          fail(line, tok.column, where() + ": " + std::string(text) + " does not fit in 32 bits");
         a.bits = static_cast<std::uint32_t>(*n);
         a.number = static_cast<double>(*n);
         return a;
       }
       default: {  // f, m, v
+        if (plainShortDecimal(tok.text, a.number)) return a;
         const auto v = parseNumber(tok.text);
-        if (!v) fail(line, tok.column, std::string(where) + " is a number: expected a C literal, got '" + std::string(text) + "'");
+        if (!v) fail(line, tok.column, where() + " is a number: expected a C literal, got '" + std::string(text) + "'");
         a.number = *v;
         return a;
       }
@@ -424,10 +425,13 @@ class Parser {
                                       "@count_fragments, @expect, @expect-picture)");
       }
 
-      // A script repeats its calls (glVertex3f after glVertex3f): the last
-      // one is tried before the table.
-      const CallSpec* spec =
-          lastCall_ && lastCall_->name == head.text ? lastCall_ : (lastCall_ = findCall(head.text));
+      // A script repeats a few calls (glNormal3f, glVertex3f, ...): the last
+      // few are tried before the table.
+      const CallSpec* spec = nullptr;
+      for (const CallSpec* recent : recentCalls_)
+        if (recent && recent->name == head.text) spec = recent;
+      if (!spec && (spec = findCall(head.text)))
+        recentCalls_[nextRecent_++ % recentCalls_.size()] = spec;
       if (!spec) {
         const std::string near = closestCallName(head.text);
         fail(lineNo, head.column, "'" + std::string(head.text) + "' is not a call of the GL script call set" +
@@ -680,7 +684,8 @@ class Parser {
   std::string file_;
   std::vector<Token> tokens_;          // the current line's
   ScriptCommand callCommand_;          // the current call line's (kind Call, no label or probe)
-  const CallSpec* lastCall_ = nullptr;  // the last call's entry
+  std::array<const CallSpec*, 4> recentCalls_{};  // the last calls' entries
+  std::size_t nextRecent_ = 0;
   Mode mode_ = Mode::Store;
   Sink sink_;
   int streamWidth_ = 0, streamHeight_ = 0;
