@@ -50,6 +50,7 @@ struct ScriptCommand {
   std::vector<ScriptArg> args;
   std::string label;  // pass label or snapshot name
   std::shared_ptr<const ScriptProbe> probe;  // Probe only
+  // (A member added here is added to swapCommands in script_read_ahead.cpp too.)
 };
 
 struct Script {

@@ -25,6 +25,17 @@ struct Batch {
 
 struct ReaderStopped {};
 
+// std::swap by member: the vectors, string and pointer trade their buffers
+// (std::swap's three moves copied a short label's bytes each time).
+void swapCommands(ScriptCommand& a, ScriptCommand& b) {
+  std::swap(a.kind, b.kind);
+  std::swap(a.line, b.line);
+  std::swap(a.call, b.call);
+  a.args.swap(b.args);
+  a.label.swap(b.label);
+  a.probe.swap(b.probe);
+}
+
 }  // namespace
 
 void streamScriptAhead(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
@@ -54,7 +65,7 @@ void streamScriptAhead(std::string_view text, const Script& header, const std::f
         if (batch.size == batch.commands.size()) batch.commands.emplace_back();
         // Swapped, not copied: the slot takes the command, the parser gets
         // the slot's old one back to fill next, vectors and all.
-        std::swap(batch.commands[batch.size++], c);
+        swapCommands(batch.commands[batch.size++], c);
         if (batch.size == kBatchCommands) handOver();
       });
       if (batch.size > 0) handOver();
