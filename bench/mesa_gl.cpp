@@ -31,15 +31,14 @@ int main(int argc, char** argv) {
     std::size_t calls = 0;
     const mpr::MesaReplay replay =
         mpr::replayOnMesa(header, driver, [&](const std::function<void(const mpr::ScriptCommand&)>& replay) {
-          const auto run = [&](mpr::ScriptCommand&& c) {
-            calls += c.kind == mpr::ScriptCommand::Kind::Call;
-            replay(c);
-          };
           // Parsed on this thread, not ahead on one of its own as `mpr gl`
           // does: on two cores a reader thread competes with llvmpipe's
           // rasterizer threads and slows it (bathroom trace 1.07 -> 1.20 s,
           // measured), so each side reads the way it is fastest.
-          mpr::streamScript(text, header, run);
+          mpr::streamScript(text, header, [&](mpr::ScriptCommand&& c) {
+            calls += c.kind == mpr::ScriptCommand::Kind::Call;
+            replay(c);
+          });
         });
     std::printf("%s: %zu calls on %s\n", path.c_str(), calls, replay.renderer.c_str());
   } catch (const mpr::ScriptError& e) {

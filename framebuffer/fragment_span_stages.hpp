@@ -3,10 +3,13 @@
 // stage's state switch (compare function, stencil operation, blend factor)
 // is taken once per span, outside its loop, and the loop body is plain
 // integer arithmetic on arrays the compiler can do several lanes at a time.
-// Each function computes, lane by lane, exactly what compare,
-// applyStencilOp and blend (compare_func.hpp, stencil.hpp, blend.hpp) do for
-// one fragment; fragment_pipeline.cpp strings them together in GL order.
+// The tests and stencil operations call compare and stencilOpValue
+// themselves with the state a constant; the blend factors, on channel
+// arrays, compute lane by lane what blendFactorValue and blend
+// (blend.hpp) do for one fragment. fragment_pipeline.cpp strings them
+// together in GL order.
 #include <cstdint>
+#include <type_traits>
 
 #include "framebuffer/blend.hpp"
 #include "framebuffer/compare_func.hpp"
@@ -14,37 +17,33 @@
 
 namespace mpr::span {
 
+// Calls body(std::integral_constant<E, e>{}) for the e that `value` is, one
+// of `values`: the state's switch taken once, the body compiled for each
+// value with it a constant (so the scalar functions' own switches fold). A
+// value outside the list gets body with it at run time.
+template <auto... values, typename E, typename Body>
+[[gnu::always_inline]] inline void withConstant(E value, Body&& body) {
+  if (!((value == values ? (body(std::integral_constant<E, values>{}), true) : false) || ...))
+    body([value] { return value; });
+}
+
 // pass[k] = compare(f, incoming(k), stored(k)) for k < n.
 template <typename Incoming, typename Stored>
 [[gnu::always_inline]] inline void compare(CompareFunc f, int n, Incoming incoming, Stored stored,
                                            std::uint32_t* pass) {
-  switch (f) {
-    case CompareFunc::Never: for (int k = 0; k < n; ++k) pass[k] = 0; return;
-    case CompareFunc::Less: for (int k = 0; k < n; ++k) pass[k] = incoming(k) < stored(k); return;
-    case CompareFunc::Equal: for (int k = 0; k < n; ++k) pass[k] = incoming(k) == stored(k); return;
-    case CompareFunc::Lequal: for (int k = 0; k < n; ++k) pass[k] = incoming(k) <= stored(k); return;
-    case CompareFunc::Greater: for (int k = 0; k < n; ++k) pass[k] = incoming(k) > stored(k); return;
-    case CompareFunc::Notequal: for (int k = 0; k < n; ++k) pass[k] = incoming(k) != stored(k); return;
-    case CompareFunc::Gequal: for (int k = 0; k < n; ++k) pass[k] = incoming(k) >= stored(k); return;
-    case CompareFunc::Always: for (int k = 0; k < n; ++k) pass[k] = 1; return;
-  }
-  for (int k = 0; k < n; ++k) pass[k] = 0;
+  using enum CompareFunc;
+  withConstant<Never, Less, Equal, Lequal, Greater, Notequal, Gequal, Always>(f, [&](auto func) {
+    for (int k = 0; k < n; ++k) pass[k] = mpr::compare(func(), incoming(k), stored(k));
+  });
 }
 
 // out[k] = stencilOpValue(op, stored[k], ref, max) for k < n.
 [[gnu::always_inline]] inline void stencilOpValues(StencilOp op, int n, const std::uint32_t* stored,
                                                    std::uint32_t ref, std::uint32_t max, std::uint32_t* out) {
-  switch (op) {
-    case StencilOp::Keep: for (int k = 0; k < n; ++k) out[k] = stored[k]; return;
-    case StencilOp::Zero: for (int k = 0; k < n; ++k) out[k] = 0; return;
-    case StencilOp::Replace: for (int k = 0; k < n; ++k) out[k] = ref & max; return;
-    case StencilOp::Incr: for (int k = 0; k < n; ++k) out[k] = stored[k] < max ? stored[k] + 1 : max; return;
-    case StencilOp::Decr: for (int k = 0; k < n; ++k) out[k] = stored[k] > 0 ? stored[k] - 1 : 0; return;
-    case StencilOp::Invert: for (int k = 0; k < n; ++k) out[k] = ~stored[k] & max; return;
-    case StencilOp::IncrWrap: for (int k = 0; k < n; ++k) out[k] = (stored[k] + 1) & max; return;
-    case StencilOp::DecrWrap: for (int k = 0; k < n; ++k) out[k] = (stored[k] - 1) & max; return;
-  }
-  for (int k = 0; k < n; ++k) out[k] = stored[k];
+  using enum StencilOp;
+  withConstant<Keep, Zero, Replace, Incr, Decr, Invert, IncrWrap, DecrWrap>(op, [&](auto o) {
+    for (int k = 0; k < n; ++k) out[k] = stencilOpValue(o(), stored[k], ref, max);
+  });
 }
 
 // Colours as four channel arrays (SoA), each value 0..255. Sixteen bits a

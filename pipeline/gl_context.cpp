@@ -405,13 +405,10 @@ void GLContext::accum(GLenumValue op, float value) {
 void GLContext::forRowBlocks(const PixelRect& region, const std::function<void(const PixelRect&)>& work) {
   // Every pixel's result depends on that pixel alone: blocks of rows on
   // separate threads give the same bytes as the whole region at once.
-  const std::int64_t pixels = std::int64_t{region.x1 - region.x0} * (region.y1 - region.y0);
-  const int n = region.empty() || !pool_ ? 1
-                                         : static_cast<int>(std::min<std::int64_t>(
-                                               {pool_->threads(), region.y1 - region.y0, pixels / pixelsPerShare_}));
+  const int height = region.y1 - region.y0;
+  const int n = region.empty() ? 1 : sharesFor(height, std::int64_t{region.x1 - region.x0} * height);
   if (n <= 1) return work(region);
   pool_->run(n, [&](int k) {
-    const int height = region.y1 - region.y0;
     work(PixelRect{region.x0, region.y0 + height * k / n, region.x1, region.y0 + height * (k + 1) / n});
   });
 }

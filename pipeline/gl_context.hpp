@@ -309,6 +309,10 @@ class GLContext {
   // the tallies summed into counters_.
   template <typename Rows>
   void runShares(int n, const Rows& rows);
+  // How many shares `rows` rows holding `pixels` pixels are split into: 1
+  // without a pool, else at most a thread or a row each and pixelsPerShare_
+  // pixels at least.
+  int sharesFor(std::int64_t rows, std::int64_t pixels) const;
   // The colours a triangle wound `ccw` (GL window space) takes: 0 front, 4
   // back (two-sided lighting); -1 when culled.
   int facingColorOffset(bool ccw) const;

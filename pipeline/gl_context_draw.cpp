@@ -21,6 +21,12 @@ bool finite4(const Vec4& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
+// Whether the fragments' colour is read: a colour channel is written, or
+// the alpha test looks at alpha.
+bool needsColor(const FragmentState& s) {
+  return s.colorMask[0] || s.colorMask[1] || s.colorMask[2] || s.colorMask[3] || s.alpha.enabled;
+}
+
 // glm::clamp(c, 0, 1) written out per component (glm's min and max are
 // std::min and std::max, NaN kept alike); glm's generic form is not inlined.
 [[gnu::always_inline]] inline Vec4 clampColor(const Vec4& c) {
@@ -419,12 +425,14 @@ void GLContext::setThreads(int threads, std::int64_t pixelsPerShare) {
 // allocate for the rows' closure.
 template <typename Rows>
 void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, const Rows& rows) {
-  // A share of a few thousand pixels a thread pays for waking it.
   const std::int64_t height = y1 - y0 + 1, pixels = height * std::max<std::int64_t>(0, x1 - x0 + 1);
-  int n = 1;
-  if (pool_ && !fragmentObserver && height > 1)
-    n = static_cast<int>(std::min<std::int64_t>({pool_->threads(), height, pixels / pixelsPerShare_}));
-  runShares(n, rows);
+  runShares(fragmentObserver ? 1 : sharesFor(height, pixels), rows);
+}
+
+int GLContext::sharesFor(std::int64_t rows, std::int64_t pixels) const {
+  // A share of a few thousand pixels a thread pays for waking it.
+  if (!pool_ || rows <= 1) return 1;
+  return static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>({pool_->threads(), rows, pixels / pixelsPerShare_})));
 }
 
 template <typename Rows>
@@ -530,16 +538,9 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
       t.planes = &depthPlanes;
     }
   }
-  t.color = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] || frag_.colorMask[3] ||
-            frag_.alpha.enabled;
-  for (int i = 0; i < 3; ++i) {
-    t.invW[i] = invW[i];
-    for (int c = 0; c < 4; ++c) t.attr[i][c] = v[i]->attr[colorOffset + c];
-    t.attr[i][4] = v[i]->attr[8];
-  }
-  for (int c = 0; c < 5; ++c)
-    t.constant[c] = std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[1][c]) &&
-                    std::bit_cast<std::uint32_t>(t.attr[0][c]) == std::bit_cast<std::uint32_t>(t.attr[2][c]);
+  t.color = needsColor(frag_);
+  for (int i = 0; i < 3; ++i) t.invW[i] = invW[i];
+  vertexChannels(a, b, c, colorOffset, t.attr, t.constant);
   if (fog_.enabled) t.fog = &fog_;
   decideFlatColor(t);
 
@@ -616,8 +617,7 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
   shading.depthMax = static_cast<float>(fb_.profile().depthMax());
   shading.fbHeight = fbHeight;
   shading.depth = frag_.depth.enabled;
-  shading.color = frag_.colorMask[0] || frag_.colorMask[1] || frag_.colorMask[2] || frag_.colorMask[3] ||
-                  frag_.alpha.enabled;
+  shading.color = needsColor(frag_);
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) shading.adj[r][c] = adj[r][c];
   shading.vpScaleX = vpScaleX_;
@@ -635,13 +635,7 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
     fan.a0 = t.a0;
     fan.dzdx = t.dzdx;
     fan.dzdy = t.dzdy;
-    for (int i = 0; i < 3; ++i) {
-      for (int c = 0; c < 4; ++c) fan.attr[static_cast<std::size_t>(i)][c] = tri[static_cast<std::size_t>(i)].attr[colorOffset + c];
-      fan.attr[static_cast<std::size_t>(i)][4] = tri[static_cast<std::size_t>(i)].attr[8];
-    }
-    for (int c = 0; c < 5; ++c)
-      fan.constant[c] = std::bit_cast<std::uint32_t>(fan.attr[0][c]) == std::bit_cast<std::uint32_t>(fan.attr[1][c]) &&
-                        std::bit_cast<std::uint32_t>(fan.attr[0][c]) == std::bit_cast<std::uint32_t>(fan.attr[2][c]);
+    vertexChannels(tri[0], tri[1], tri[2], colorOffset, fan.attr, fan.constant);
     // Bounds of the pixels whose centres the fixed-point edges can cover
     // (positions are (v - 0.5) * 256: pixel x's centre is at x * 256).
     const std::int64_t minX = std::min({t.fixedX[0], t.fixedX[1], t.fixedX[2]}),
@@ -737,7 +731,7 @@ void GLContext::defer(const FanTriangleRows& job) {
 
 void GLContext::drawDeferred() {
   if (deferred_.empty()) return;
-  const int n = static_cast<int>(std::min<std::int64_t>(pool_ ? pool_->threads() : 1, deferredPixels_ / pixelsPerShare_));
+  const int n = sharesFor(fb_.height(), deferredPixels_);
   const auto share = [&](FragmentTally& tally, int stride, int phase) {
     for (const DeferredTriangle& d : deferred_) {
       if (d.fan) drawRows(deferredFan_[d.index], tally, stride, phase);

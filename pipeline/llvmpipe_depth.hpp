@@ -83,7 +83,10 @@ struct LlvmpipeDepth {
 
   float at(int x, int yDown) const { return planeAt(triangles.size() == 1 ? triangles[0] : containing(x, yDown), x, yDown); }
   static float planeAt(const Triangle& t, int x, int yDown) {
-    return std::fma(t.dzdy, static_cast<float>(yDown), std::fma(t.dzdx, static_cast<float>(x), t.a0));
+    return planeAt(t.a0, t.dzdx, t.dzdy, static_cast<float>(x), static_cast<float>(yDown));
+  }
+  static float planeAt(float a0, float dzdx, float dzdy, float x, float yDown) {
+    return std::fma(dzdy, yDown, std::fma(dzdx, x, a0));
   }
 
  private:

@@ -145,10 +145,8 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
       }
       break;
     case TriangleShading::Depth::OnePlane: {
-      // LlvmpipeDepth::planeAt: two fused multiply-adds.
-      const float rowTerm = static_cast<float>(t.fbHeight - 1 - out.y);
-      for (int k = 0; k < n; ++k)
-        z[k] = std::fma(t.dzdy, rowTerm, std::fma(t.dzdx, static_cast<float>(out.x + k), t.a0));
+      const float yDown = static_cast<float>(t.fbHeight - 1 - out.y);
+      for (int k = 0; k < n; ++k) z[k] = LlvmpipeDepth::planeAt(t.a0, t.dzdx, t.dzdy, static_cast<float>(out.x + k), yDown);
       break;
     }
     case TriangleShading::Depth::Planes:
@@ -197,12 +195,10 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
 MPR_CPU_CLONES
 bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
   const int n = out.count;
-  const int yDown = t.fbHeight - 1 - out.y;
   alignas(64) float z[kN];
   if (t.depth) {
-    // LlvmpipeDepth::planeAt: two fused multiply-adds.
-    const float rowTerm = static_cast<float>(yDown);
-    for (int k = 0; k < n; ++k) z[k] = std::fma(t.dzdy, rowTerm, std::fma(t.dzdx, static_cast<float>(out.x + k), t.a0));
+    const float yDown = static_cast<float>(t.fbHeight - 1 - out.y);
+    for (int k = 0; k < n; ++k) z[k] = LlvmpipeDepth::planeAt(t.a0, t.dzdx, t.dzdy, static_cast<float>(out.x + k), yDown);
   } else {
     for (int k = 0; k < n; ++k) z[k] = 0.0f;
   }
@@ -253,6 +249,18 @@ void decideFlatColor(TriangleShading& t) {
   const double lo = std::min({t.invW[0], t.invW[1], t.invW[2]}), hi = std::max({t.invW[0], t.invW[1], t.invW[2]});
   t.flatColor = constant && lo > 0.0 && std::isfinite(hi) && hi <= 0x1p20 * lo;
   t.reciprocalArea = 1.0 / t.exactArea;
+}
+
+void vertexChannels(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, int colorOffset,
+                    std::array<std::array<float, 5>, 3>& attr, std::array<bool, 5>& constant) {
+  const ClipVertex* v[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i) {
+    for (int ch = 0; ch < 4; ++ch) attr[i][ch] = v[i]->attr[colorOffset + ch];
+    attr[i][4] = v[i]->attr[8];
+  }
+  for (int ch = 0; ch < 5; ++ch)
+    constant[ch] = std::bit_cast<std::uint32_t>(attr[0][ch]) == std::bit_cast<std::uint32_t>(attr[1][ch]) &&
+                   std::bit_cast<std::uint32_t>(attr[0][ch]) == std::bit_cast<std::uint32_t>(attr[2][ch]);
 }
 
 }  // namespace mpr

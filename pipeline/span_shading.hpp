@@ -73,6 +73,12 @@ struct FanShading {
 // fragment). Returns whether every pixel is kept.
 bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept);
 
+// The channels a triangle's fragments interpolate, per vertex: the colour
+// set at `colorOffset` (front 0, back 4) and the fog coordinate; and which
+// of them are the same float, bit for bit, at the three vertices.
+void vertexChannels(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, int colorOffset,
+                    std::array<std::array<float, 5>, 3>& attr, std::array<bool, 5>& constant);
+
 // Sets flatColor and reciprocalArea from the fields above.
 void decideFlatColor(TriangleShading& t);
 

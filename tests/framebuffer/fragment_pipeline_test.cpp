@@ -17,8 +17,25 @@ namespace {
 
 constexpr int kSize = 8;
 
-// The stencil and depth tests' functions, operations and masks, at random.
+// A variant's state: bits 1, 2, 4, 8 turn the alpha test, stencil test,
+// depth test and blending on.
+FragmentState variantState(int bits, const std::array<bool, 4>& colorMask) {
+  FragmentState s;
+  s.alpha.enabled = (bits & 1) != 0;
+  s.stencil.enabled = (bits & 2) != 0;
+  s.depth.enabled = (bits & 4) != 0;
+  s.blend.enabled = (bits & 8) != 0;
+  s.colorMask = colorMask;
+  return s;
+}
+
+// The tests' functions, references, operations and masks and the blend
+// factors, at random (a variant is chosen by what is on, not by these).
 void randomizeTests(FragmentState& s, std::mt19937& rng) {
+  s.alpha.func = static_cast<CompareFunc>(rng() % 8);
+  s.alpha.ref = static_cast<float>(rng() % 256) / 255.0f;
+  s.blend.src = static_cast<BlendFactor>(rng() % 11);
+  s.blend.dst = static_cast<BlendFactor>(rng() % 11);
   s.stencil.func = static_cast<CompareFunc>(rng() % 8);
   s.stencil.ref = rng() & 0xFF;
   s.stencil.valueMask = rng() & 0xFF;
@@ -41,6 +58,12 @@ void fillRandom(Framebuffer& fb, int seed) {
     }
 }
 
+void expectSameBuffers(const Framebuffer& found, const Framebuffer& expected, int bits, int trial) {
+  ASSERT_EQ(found.colorData(), expected.colorData()) << "variant " << bits << " trial " << trial;
+  ASSERT_EQ(found.depthData(), expected.depthData()) << "variant " << bits << " trial " << trial;
+  ASSERT_EQ(found.stencilData(), expected.stencilData()) << "variant " << bits << " trial " << trial;
+}
+
 TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
   std::mt19937 rng(14);
   const std::array<std::array<bool, 4>, 6> masks = {{{false, false, false, false},
@@ -52,12 +75,7 @@ TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
   int variants = 0;
   for (int bits = 0; bits < 16; ++bits)
     for (const auto& mask : masks) {
-      FragmentState s;
-      s.alpha = {(bits & 1) != 0, CompareFunc::Gequal, 0.5f};
-      s.stencil.enabled = (bits & 2) != 0;
-      s.depth.enabled = (bits & 4) != 0;
-      s.blend = {(bits & 8) != 0, BlendFactor::SrcAlpha, BlendFactor::OneMinusDstColor};
-      s.colorMask = mask;
+      FragmentState s = variantState(bits, mask);
       const FragmentFunction op = chooseFragmentPipeline(s).fragment;
       ++variants;
       for (int trial = 0; trial < 200; ++trial) {
@@ -74,9 +92,7 @@ TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
         const FragmentFate want = processFragment(s, expected, f);
         const FragmentFate got = op(s, found, f);
         ASSERT_EQ(got, want) << "variant " << bits << " trial " << trial;
-        ASSERT_EQ(found.colorData(), expected.colorData()) << "variant " << bits << " trial " << trial;
-        ASSERT_EQ(found.depthData(), expected.depthData()) << "variant " << bits << " trial " << trial;
-        ASSERT_EQ(found.stencilData(), expected.stencilData()) << "variant " << bits << " trial " << trial;
+        ASSERT_NO_FATAL_FAILURE(expectSameBuffers(found, expected, bits, trial));
       }
     }
   EXPECT_EQ(variants, 96);
@@ -92,12 +108,7 @@ TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
   int variants = 0;
   for (int bits = 0; bits < 16; ++bits)
     for (const auto& mask : masks) {
-      FragmentState s;
-      s.alpha = {(bits & 1) != 0, CompareFunc::Less, 0.5f};
-      s.stencil.enabled = (bits & 2) != 0;
-      s.depth.enabled = (bits & 4) != 0;
-      s.blend = {(bits & 8) != 0, BlendFactor::One, BlendFactor::One};
-      s.colorMask = mask;
+      FragmentState s = variantState(bits, mask);
       const SpanFunction op = chooseFragmentPipeline(s).span;
       ++variants;
       for (int trial = 0; trial < 100; ++trial) {
@@ -119,9 +130,7 @@ TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
           want += processFragment(s, expected, f) == FragmentFate::Written;
         }
         ASSERT_EQ(op(s, found, span), want) << "variant " << bits << " trial " << trial;
-        ASSERT_EQ(found.colorData(), expected.colorData()) << "variant " << bits << " trial " << trial;
-        ASSERT_EQ(found.depthData(), expected.depthData()) << "variant " << bits << " trial " << trial;
-        ASSERT_EQ(found.stencilData(), expected.stencilData()) << "variant " << bits << " trial " << trial;
+        ASSERT_NO_FATAL_FAILURE(expectSameBuffers(found, expected, bits, trial));
       }
     }
   EXPECT_EQ(variants, 48);
