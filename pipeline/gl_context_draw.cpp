@@ -12,6 +12,7 @@
 #include "pipeline/mesa_matrix_inverse.hpp"
 #include "pipeline/span_shading.hpp"
 #include "util/transforms.hpp"
+#include "raster/fixed_point.hpp"
 #include "raster/triangle_rasterizer.hpp"
 
 namespace mpr {
@@ -585,7 +586,7 @@ void GLContext::drawRows(const ClippedTriangleRows& job, FragmentTally& tally, i
 
 namespace {
 // floor(a / b) for b > 0.
-std::int64_t floorDivide(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+std::int64_t floorDivide(std::int64_t a, std::int64_t b) { return a / b - (a % b != 0 && a < 0 ? 1 : 0); }
 }  // namespace
 
 void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth) {
@@ -674,9 +675,11 @@ void GLContext::drawRows(const FanTriangleRows& job, FragmentTally& tally, int s
     for (int i = 0; i < 3 && spanLo <= spanHi; ++i) {
       const int j = (i + 1) % 3;
       const std::int64_t a = (t.fixedY[i] - t.fixedY[j]) * 256;
-      const std::int64_t k = t.c[i] + (t.fixedX[i] - t.fixedX[j]) * (yDown * 256);
-      if (a > 0) spanHi = std::min(spanHi, floorDivide(k - 1, a));           // a x <= k - 1
-      else if (a < 0) spanLo = std::max(spanLo, -floorDivide(k - 1, -a));    // -a x >= 1 - k
+      // Wrapping as covers() wraps: only a NaN or huge vertex's clamped position overflows.
+      const std::int64_t k = wrappingAdd(t.c[i], (t.fixedX[i] - t.fixedX[j]) * (yDown * 256));
+      const std::int64_t km1 = wrappingSub(k, 1);
+      if (a > 0) spanHi = std::min(spanHi, floorDivide(km1, a));           // a x <= k - 1
+      else if (a < 0) spanLo = std::max(spanLo, -floorDivide(km1, -a));    // -a x >= 1 - k
       else if (!(k > 0)) spanHi = spanLo - 1;
     }
     const int y = fbHeight - 1 - static_cast<int>(yDown);

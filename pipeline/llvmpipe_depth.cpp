@@ -128,8 +128,10 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
   const LlWindow p2 = toLlWindow(d2, window);
   // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions.
   auto fixed = [](float f) { return saturateToInt64(std::nearbyint(static_cast<double>(f) * 256.0)); };
-  const std::int64_t area = (fixed(p0.x) - fixed(p1.x)) * (fixed(p2.y) - fixed(p0.y)) -
-                            (fixed(p2.x) - fixed(p0.x)) * (fixed(p0.y) - fixed(p1.y));
+  // (Wrapping: a NaN or huge vertex's clamped position must not overflow.)
+  const std::int64_t area =
+      wrappingSub(wrappingMul(wrappingSub(fixed(p0.x), fixed(p1.x)), wrappingSub(fixed(p2.y), fixed(p0.y))),
+                  wrappingMul(wrappingSub(fixed(p2.x), fixed(p0.x)), wrappingSub(fixed(p0.y), fixed(p1.y))));
   if (area == 0) return;  // llvmpipe draws nothing
   // y-down positions: a positive area here is counter-clockwise in GL's y-up window.
   const bool ccwUp = area > 0;
@@ -161,8 +163,8 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
     // edge not, whichever way it is wound).
     const int j = (i + 1) % 3;
     const std::int64_t dcdx = t.fixedY[i] - t.fixedY[j], dcdy = t.fixedX[i] - t.fixedX[j];
-    t.c[i] = dcdx * t.fixedX[i] - dcdy * t.fixedY[i];
-    if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) ++t.c[i];
+    t.c[i] = wrappingSub(wrappingMul(dcdx, t.fixedX[i]), wrappingMul(dcdy, t.fixedY[i]));
+    if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) t.c[i] = wrappingAdd(t.c[i], 1);
   }
   triangles.push_back(t);
 }
@@ -175,7 +177,7 @@ bool LlvmpipeDepth::Triangle::covers(int x, int yDown) const {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
     const std::int64_t dcdx = fixedY[i] - fixedY[j], dcdy = fixedX[i] - fixedX[j];
-    if (!(c[i] + dcdy * py - dcdx * px > 0)) return false;
+    if (!(wrappingSub(wrappingAdd(c[i], wrappingMul(dcdy, py)), wrappingMul(dcdx, px)) > 0)) return false;
   }
   return true;
 }

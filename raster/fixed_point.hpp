@@ -25,6 +25,20 @@ inline std::int64_t saturateToInt64(double rounded) {
   return static_cast<std::int64_t>(rounded);
 }
 
+// Two's-complement wrap-around, as 64-bit integer hardware gives: the exact
+// result wherever it fits, and a defined one (not undefined behaviour) for
+// the clamped positions of non-finite or huge vertices, whose primitives no
+// render draws.
+inline std::int64_t wrappingAdd(std::int64_t a, std::int64_t b) {
+  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b));
+}
+inline std::int64_t wrappingSub(std::int64_t a, std::int64_t b) {
+  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) - static_cast<std::uint64_t>(b));
+}
+inline std::int64_t wrappingMul(std::int64_t a, std::int64_t b) {
+  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b));
+}
+
 // Window coordinate to fixed point, rounding to nearest even as lrintf does.
 inline std::int64_t snapToSubpixel(float windowCoord) {
   const double shifted = (static_cast<double>(windowCoord) - 0.5) * static_cast<double>(kSubpixelOne);

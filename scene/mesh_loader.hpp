@@ -1,5 +1,6 @@
 #pragma once
-// Mesh files (OBJ, OFF, PLY, STL) through OpenMesh, as polygons with smooth
+// Mesh files (OBJ, OFF, PLY, STL) through OpenMesh (OFF and PLY read by MPR,
+// off_reader.hpp and ply_reader.hpp), as polygons with smooth
 // vertex normals.
 #include <cstdint>
 #include <string>
