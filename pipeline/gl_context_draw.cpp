@@ -488,6 +488,9 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     }
     const float xw = xn * vpScaleX_ + vpTransX_;
     const float yw = yn * vpScaleY_ + vpTransY_;
+    // A denormal w (1/w = inf) puts the vertex at an infinite window
+    // position: the primitive is dropped like one with a non-finite vertex.
+    if (!std::isfinite(xw) || !std::isfinite(yw)) return;
     invW[i] = static_cast<double>(iw) * mapInvQ[i];
     xWin[i] = xw;
     yWin[i] = yw;

@@ -12,11 +12,12 @@ inline constexpr int kSubpixelBits = 8;
 inline constexpr std::int64_t kSubpixelOne = std::int64_t{1} << kSubpixelBits;
 
 // A rounded double to int64 without undefined behaviour: NaN gives 0 and
-// magnitudes past 2^62 saturate there (so that differences and the products
-// of edge functions over them stay representable). Values a render can reach
-// (windows of 16384 pixels, viewports at int offsets) are far inside, so
-// their results are unchanged; only NaN, infinite and w = 0 vertices and
-// singular matrices reach the clamp, and the callers drop those primitives.
+// magnitudes past 2^62 saturate there (so that differences stay
+// representable). Values a render can reach (windows of 16384 pixels,
+// viewports at int offsets) are far inside, so their results are unchanged;
+// only NaN, infinite and w = 0 or denormal-w vertices and singular matrices
+// reach the clamp: MPR's rasterizer drops those primitives before any
+// product, and llvmpipe's set-up (llvmpipe_depth) wraps its products.
 inline std::int64_t saturateToInt64(double rounded) {
   constexpr double kLimit = 4611686018427387904.0;  // 2^62
   if (!(rounded == rounded)) return 0;
