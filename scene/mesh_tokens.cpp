@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace mpr {
 namespace {
@@ -10,6 +11,19 @@ namespace {
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
 }  // namespace
+
+void splitMeshWords(std::string_view line, std::vector<MeshWord>& words) {
+  words.clear();
+  for (std::size_t i = 0; i < line.size();) {
+    if (isMeshBlank(line[i])) {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < line.size() && !isMeshBlank(line[i])) ++i;
+    words.push_back({line.substr(start, i - start), start + 1});
+  }
+}
 
 bool parseMeshUnsigned(std::string_view t, std::uint64_t& value) {
   if (t.empty() || t.size() > 10) return false;
@@ -45,11 +59,25 @@ bool parseMeshFloat(std::string_view t, float& value) {
   return std::isfinite(value);
 }
 
-std::string quotedMeshToken(std::string_view t) {
-  std::string s(t.substr(0, 40));
+std::string quotedMeshToken(std::string_view t, std::size_t limit) {
+  std::string s(t.substr(0, limit));
   for (char& c : s)
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-  return "'" + s + (t.size() > 40 ? "...'" : "'");
+  return "'" + s + (t.size() > limit ? "...'" : "'");
+}
+
+void refuseMeshLine(const std::string& name, std::uint64_t line, std::uint64_t column, const std::string& why) {
+  throw std::runtime_error("mesh file '" + name + "' line " + std::to_string(line) + " column " +
+                           std::to_string(column) + ": " + why);
+}
+
+void refuseMeshByte(const std::string& name, std::size_t byte, const std::string& why) {
+  throw std::runtime_error("mesh file '" + name + "' byte " + std::to_string(byte) + ": " + why);
+}
+
+std::string meshCountsTooLarge(std::uint64_t vertices, std::uint64_t faces, std::size_t fileBytes) {
+  return "claims " + std::to_string(vertices) + " vertices and " + std::to_string(faces) + " faces, more than its " +
+         std::to_string(fileBytes) + " bytes can hold";
 }
 
 }  // namespace mpr

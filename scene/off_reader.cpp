@@ -1,20 +1,14 @@
 // OFF files read line by line (see off_reader.hpp).
 #include "scene/off_reader.hpp"
 
-#include "scene/mesh_tokens.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <stdexcept>
+
+#include "scene/mesh_tokens.hpp"
 
 namespace mpr {
 namespace {
-
-struct Token {
-  std::string_view text;
-  std::uint64_t column;  // 1-based, in bytes
-};
 
 // The file's lines one at a time, split into tokens, '#' comments dropped.
 class OffLines {
@@ -22,23 +16,14 @@ class OffLines {
   explicit OffLines(std::string_view bytes) : bytes_(bytes) {}
 
   // The next line that has tokens; false at the end of the file.
-  bool next(std::vector<Token>& tokens) {
+  bool next(std::vector<MeshWord>& tokens) {
     while (pos_ < bytes_.size()) {
       const std::size_t end = std::min(bytes_.find('\n', pos_), bytes_.size());
       std::string_view line = bytes_.substr(pos_, end - pos_);
       pos_ = end + 1;
       ++line_;
       if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-      tokens.clear();
-      for (std::size_t i = 0; i < line.size();) {
-        if (isMeshBlank(line[i])) {
-          ++i;
-          continue;
-        }
-        const std::size_t start = i;
-        while (i < line.size() && !isMeshBlank(line[i])) ++i;
-        tokens.push_back({line.substr(start, i - start), start + 1});
-      }
+      splitMeshWords(line, tokens);
       if (!tokens.empty()) return true;
     }
     return false;
@@ -54,11 +39,6 @@ class OffLines {
   std::uint64_t line_ = 0;
 };
 
-[[noreturn]] void refuse(const std::string& name, std::uint64_t line, std::uint64_t column, const std::string& why) {
-  throw std::runtime_error("mesh file '" + name + "' line " + std::to_string(line) + " column " +
-                           std::to_string(column) + ": " + why);
-}
-
 // "[ST][C][N]OFF": what OpenMesh's can_u_read accepts, less the 4 and n
 // (other dimensions) it refuses too.
 bool isOffMagic(std::string_view t) {
@@ -68,19 +48,12 @@ bool isOffMagic(std::string_view t) {
   return t == "OFF";
 }
 
-std::string claims(std::uint64_t vertices, std::uint64_t faces, std::size_t size) {
-  return "claims " + std::to_string(vertices) + " vertices and " + std::to_string(faces) + " faces, more than its " +
-         std::to_string(size) + " bytes can hold";
-}
-
 // OpenMesh's read_binary: little-endian uint32 counts (vertices, faces,
 // edges), three float32 per vertex, then per face a uint32 size and as many
 // uint32 indices; no colours after plain OFF.
 PolygonFile parseBinaryOff(std::string_view bytes, std::size_t start, const std::string& name) {
   std::size_t at = start;
-  auto refuseAt = [&](std::size_t byte, const std::string& why) -> void {
-    throw std::runtime_error("mesh file '" + name + "' byte " + std::to_string(byte) + ": " + why);
-  };
+  auto refuseAt = [&](std::size_t byte, const std::string& why) { refuseMeshByte(name, byte, why); };
   auto u32 = [&](const char* what) {
     if (bytes.size() - at < 4) refuseAt(at, std::string("the file ends inside ") + what);
     std::uint32_t v = 0;
@@ -92,7 +65,7 @@ PolygonFile parseBinaryOff(std::string_view bytes, std::size_t start, const std:
   (void)u32("the edge count");
   const std::uint64_t left = bytes.size() - at;
   if (vertices * 12 > left || faces * 4 > left || vertices * 12 + faces * 4 > left)
-    refuseAt(start, claims(vertices, faces, bytes.size()));
+    refuseAt(start, meshCountsTooLarge(vertices, faces, bytes.size()));
   PolygonFile m;
   m.points.reserve(vertices);
   m.faces.reserve(faces);
@@ -129,18 +102,18 @@ PolygonFile parseBinaryOff(std::string_view bytes, std::size_t start, const std:
 
 PolygonFile parseOff(std::string_view bytes, const std::string& name) {
   OffLines lines(bytes);
-  std::vector<Token> tokens;
-  if (!lines.next(tokens)) refuse(name, std::max<std::uint64_t>(lines.line(), 1), 1, "is empty: an OFF file starts with OFF");
+  std::vector<MeshWord> tokens;
+  if (!lines.next(tokens)) refuseMeshLine(name, std::max<std::uint64_t>(lines.line(), 1), 1, "is empty: an OFF file starts with OFF");
   if (!isOffMagic(tokens[0].text)) {
     const bool otherDimension = tokens[0].text.find("4OFF") != std::string_view::npos ||
                                 tokens[0].text.find("nOFF") != std::string_view::npos;
-    refuse(name, lines.line(), tokens[0].column,
+    refuseMeshLine(name, lines.line(), tokens[0].column,
            otherDimension ? "4OFF and nOFF (vertices of other than three coordinates) are not supported"
                           : "does not start with OFF (or STOFF, COFF, NOFF)");
   }
   if (tokens.size() > 1 && tokens[1].text == "BINARY") {
     if (tokens[0].text != "OFF" || tokens.size() > 2)
-      refuse(name, lines.line(), tokens[1].column, "only a plain 'OFF BINARY' line is read in binary");
+      refuseMeshLine(name, lines.line(), tokens[1].column, "only a plain 'OFF BINARY' line is read in binary");
     return parseBinaryOff(bytes, lines.offset(), name);
   }
 
@@ -152,16 +125,16 @@ PolygonFile parseOff(std::string_view bytes, const std::string& name) {
   while (have < 3) {
     if (first >= tokens.size()) {
       if (!lines.next(tokens))
-        refuse(name, lines.line(), 1,
+        refuseMeshLine(name, lines.line(), 1,
                have == 0 ? "has no vertex and face counts after OFF"
                          : std::string("has no ") + kCountNames[have] + " count after OFF");
       first = 0;
     }
     for (std::size_t i = first; i < tokens.size(); ++i) {
       if (have == 3)
-        refuse(name, lines.line(), tokens[i].column, quotedMeshToken(tokens[i].text) + " follows the three counts on their line");
+        refuseMeshLine(name, lines.line(), tokens[i].column, quotedMeshToken(tokens[i].text) + " follows the three counts on their line");
       if (!parseMeshUnsigned(tokens[i].text, counts[have]))
-        refuse(name, lines.line(), tokens[i].column,
+        refuseMeshLine(name, lines.line(), tokens[i].column,
                std::string("the ") + kCountNames[have] + " count " + quotedMeshToken(tokens[i].text) +
                    " is not a plain number below 2^32");
       ++have;
@@ -172,33 +145,33 @@ PolygonFile parseOff(std::string_view bytes, const std::string& name) {
   // Every vertex takes at least three bytes and every face one, so a 40-byte
   // file cannot have 2e9 vertices reserved for it.
   if (vertices > bytes.size() / 3 || faces > bytes.size() || vertices * 3 + faces > bytes.size())
-    refuse(name, lines.line(), tokens[0].column, claims(vertices, faces, bytes.size()));
+    refuseMeshLine(name, lines.line(), tokens[0].column, meshCountsTooLarge(vertices, faces, bytes.size()));
 
   PolygonFile m;
   m.points.reserve(vertices);
   m.faces.reserve(faces);
   while (m.points.size() < vertices) {
     if (!lines.next(tokens))
-      refuse(name, lines.line(), 1, "the file ends after " + std::to_string(m.points.size()) + " of its " +
+      refuseMeshLine(name, lines.line(), 1, "the file ends after " + std::to_string(m.points.size()) + " of its " +
                                         std::to_string(vertices) + " vertices");
-    if (tokens.size() < 3) refuse(name, lines.line(), tokens[0].column, "a vertex needs three numbers (x y z)");
+    if (tokens.size() < 3) refuseMeshLine(name, lines.line(), tokens[0].column, "a vertex needs three numbers (x y z)");
     std::array<float, 3> p{};
     for (int c = 0; c < 3; ++c)
       if (!parseMeshFloat(tokens[static_cast<std::size_t>(c)].text, p[static_cast<std::size_t>(c)]))
-        refuse(name, lines.line(), tokens[static_cast<std::size_t>(c)].column,
+        refuseMeshLine(name, lines.line(), tokens[static_cast<std::size_t>(c)].column,
                quotedMeshToken(tokens[static_cast<std::size_t>(c)].text) + " is not a finite decimal number");
     m.points.push_back(p);
   }
   while (m.faces.size() < faces) {
     if (!lines.next(tokens))
-      refuse(name, lines.line(), 1, "the file ends after " + std::to_string(m.faces.size()) + " of its " +
+      refuseMeshLine(name, lines.line(), 1, "the file ends after " + std::to_string(m.faces.size()) + " of its " +
                                         std::to_string(faces) + " faces");
     std::uint64_t k = 0;
     if (!parseMeshUnsigned(tokens[0].text, k) || k < 1 || k > vertices)
-      refuse(name, lines.line(), tokens[0].column,
+      refuseMeshLine(name, lines.line(), tokens[0].column,
              "a face starts with its vertex count, 1 to " + std::to_string(vertices) + ", not " + quotedMeshToken(tokens[0].text));
     if (tokens.size() - 1 < k)
-      refuse(name, lines.line(), tokens[0].column,
+      refuseMeshLine(name, lines.line(), tokens[0].column,
              "a face of " + std::to_string(k) + " vertices needs " + std::to_string(k) + " indices; the line has " +
                  std::to_string(tokens.size() - 1));
     // Tokens after the indices are the face's colour, not used.
@@ -206,7 +179,7 @@ PolygonFile parseOff(std::string_view bytes, const std::string& name) {
     for (std::size_t i = 0; i < k; ++i) {
       std::uint64_t idx = 0;
       if (!parseMeshUnsigned(tokens[i + 1].text, idx) || idx >= vertices)
-        refuse(name, lines.line(), tokens[i + 1].column,
+        refuseMeshLine(name, lines.line(), tokens[i + 1].column,
                "a vertex index is a plain number below " + std::to_string(vertices) + ", not " +
                    quotedMeshToken(tokens[i + 1].text));
       face[i] = static_cast<std::uint32_t>(idx);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <stdexcept>
 #include <vector>
 
 #include "scene/mesh_tokens.hpp"
@@ -56,13 +55,6 @@ struct Element {
 
 enum class Format { None, Ascii, LittleEndian, BigEndian };
 
-std::string lineForMessage(std::string_view line) {
-  std::string s(line.substr(0, 80));
-  for (char& c : s)
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-  return "'" + s + (line.size() > 80 ? "...'" : "'");
-}
-
 class PlyParser {
  public:
   PlyParser(std::string_view bytes, const std::string& name) : bytes_(bytes), name_(name) {}
@@ -89,12 +81,9 @@ class PlyParser {
 
  private:
   [[noreturn]] void refuseLine(std::uint64_t line, std::uint64_t column, const std::string& why) const {
-    throw std::runtime_error("mesh file '" + name_ + "' line " + std::to_string(line) + " column " +
-                             std::to_string(column) + ": " + why);
+    refuseMeshLine(name_, line, column, why);
   }
-  [[noreturn]] void refuseByte(std::size_t byte, const std::string& why) const {
-    throw std::runtime_error("mesh file '" + name_ + "' byte " + std::to_string(byte) + ": " + why);
-  }
+  [[noreturn]] void refuseByte(std::size_t byte, const std::string& why) const { refuseMeshByte(name_, byte, why); }
 
   // The header's lines up to end_header, each checked against PLY's grammar
   // (OpenMesh looped forever on a header without end_header and on lines it
@@ -103,66 +92,58 @@ class PlyParser {
     std::size_t pos = 0;
     std::uint64_t lineNo = 0;
     bool ended = false;
+    std::vector<MeshWord> words;
     while (pos < bytes_.size()) {
       const std::size_t end = std::min(bytes_.find('\n', pos), bytes_.size());
       std::string_view line = bytes_.substr(pos, end - pos);
       pos = end + 1;
       ++lineNo;
       if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      std::vector<std::string_view> words;
-      for (std::size_t i = 0; i < line.size();) {
-        if (isMeshBlank(line[i])) {
-          ++i;
-          continue;
-        }
-        const std::size_t start = i;
-        while (i < line.size() && !isMeshBlank(line[i])) ++i;
-        words.push_back(line.substr(start, i - start));
-      }
+      splitMeshWords(line, words);
       if (lineNo == 1) {
-        if (words.size() != 1 || words[0] != "ply") refuseLine(1, 1, "does not start with ply");
+        if (words.size() != 1 || words[0].text != "ply") refuseLine(1, 1, "does not start with ply");
         continue;
       }
-      const std::string_view word = words.empty() ? std::string_view() : words[0];
+      const std::string_view word = words.empty() ? std::string_view() : words[0].text;
       if (word == "end_header" && words.size() == 1) {
         ended = true;
         break;
       }
       if (word == "comment" || word == "obj_info") continue;
       if (word == "format") {
-        if (format_ != Format::None || words.size() != 3 || words[2] != "1.0" ||
-            (words[1] != "ascii" && words[1] != "binary_little_endian" && words[1] != "binary_big_endian"))
-          refuseLine(lineNo, 1, "has a bad format line: " + lineForMessage(line));
-        format_ = words[1] == "ascii" ? Format::Ascii
-                  : words[1] == "binary_little_endian" ? Format::LittleEndian
+        if (format_ != Format::None || words.size() != 3 || words[2].text != "1.0" ||
+            (words[1].text != "ascii" && words[1].text != "binary_little_endian" && words[1].text != "binary_big_endian"))
+          refuseLine(lineNo, 1, "has a bad format line: " + quotedMeshToken(line, 80));
+        format_ = words[1].text == "ascii" ? Format::Ascii
+                  : words[1].text == "binary_little_endian" ? Format::LittleEndian
                                                        : Format::BigEndian;
         continue;
       }
       if (word == "property") {
-        if (elements_.empty()) refuseLine(lineNo, 1, "has a property before any element: " + lineForMessage(line));
+        if (elements_.empty()) refuseLine(lineNo, 1, "has a property before any element: " + quotedMeshToken(line, 80));
         Property p;
-        const bool ok = words.size() >= 3 && words[1] == "list"
-                            ? words.size() == 5 && scalarNamed(words[2], p.count) && scalarNamed(words[3], p.value)
-                            : words.size() == 3 && scalarNamed(words[1], p.value);
-        if (!ok) refuseLine(lineNo, 1, "has a bad property line: " + lineForMessage(line));
-        p.list = words[1] == "list";
-        p.name = std::string(words.back());
+        const bool ok = words.size() >= 3 && words[1].text == "list"
+                            ? words.size() == 5 && scalarNamed(words[2].text, p.count) && scalarNamed(words[3].text, p.value)
+                            : words.size() == 3 && scalarNamed(words[1].text, p.value);
+        if (!ok) refuseLine(lineNo, 1, "has a bad property line: " + quotedMeshToken(line, 80));
+        p.list = words[1].text == "list";
+        p.name = std::string(words.back().text);
         if (p.list && !isInteger(p.count))
-          refuseLine(lineNo, 1, "a list's count must have an integer type: " + lineForMessage(line));
+          refuseLine(lineNo, 1, "a list's count must have an integer type: " + quotedMeshToken(line, 80));
         Element& e = elements_.back();
         const bool indices = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
         if (indices && (!p.list || !isInteger(p.value)))
-          refuseLine(lineNo, 1, "a face's vertex indices are a list of integers: " + lineForMessage(line));
+          refuseLine(lineNo, 1, "a face's vertex indices are a list of integers: " + quotedMeshToken(line, 80));
         if (e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z") && p.list)
-          refuseLine(lineNo, 1, "a vertex coordinate is one number, not a list: " + lineForMessage(line));
+          refuseLine(lineNo, 1, "a vertex coordinate is one number, not a list: " + quotedMeshToken(line, 80));
         e.properties.push_back(p);
         continue;
       }
-      if (word != "element") refuseLine(lineNo, 1, "has a header line PLY does not know: " + lineForMessage(line));
+      if (word != "element") refuseLine(lineNo, 1, "has a header line PLY does not know: " + quotedMeshToken(line, 80));
       Element e;
-      if (words.size() != 3 || !parseMeshUnsigned(words[2], e.count))
-        refuseLine(lineNo, 1, "has an element line without a count: " + lineForMessage(line));
-      e.name = std::string(words[1]);
+      if (words.size() != 3 || !parseMeshUnsigned(words[2].text, e.count))
+        refuseLine(lineNo, 1, "has an element line without a count: " + quotedMeshToken(line, 80));
+      e.name = std::string(words[1].text);
       for (const Element& other : elements_)
         if (other.name == e.name) refuseLine(lineNo, 1, "has a second '" + e.name + "' element");
       if (e.name == "face") faceLine_ = lineNo;
@@ -195,8 +176,7 @@ class PlyParser {
       if (needed > left || e.count > left) break;
     }
     if (needed > left || vertices_ > left || faces > left)
-      refuseLine(bodyLine_, 1, "claims " + std::to_string(vertices_) + " vertices and " + std::to_string(faces) +
-                                   " faces, more than its " + std::to_string(bytes_.size()) + " bytes can hold");
+      refuseLine(bodyLine_, 1, meshCountsTooLarge(vertices_, faces, bytes_.size()));
   }
 
   void readElement(const Element& e, PolygonFile& file) {

@@ -1,8 +1,6 @@
 // OFF files read by MPR (scene/off_reader): a well-formed file gives the mesh
 // OpenMesh's own reader gives, bit for bit; a malformed one is refused with
 // its line and column, before anything is reserved for it.
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -11,6 +9,7 @@
 #include <random>
 #include <sstream>
 
+#include "scene/mesh_file_test_helpers.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/off_reader.hpp"
 
@@ -18,44 +17,6 @@ namespace mpr {
 namespace {
 
 using namespace std::string_literals;
-using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
-
-std::string writeFile(const std::string& name, const std::string& bytes) {
-  const std::string path = (std::filesystem::path(::testing::TempDir()) / name).string();
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
-}
-
-// What mesh_loader made of a mesh before MPR read OFF itself: OpenMesh's
-// reader, then the same normals and fan triangles.
-Mesh loadWithOpenMesh(const std::string& path) {
-  PolyMesh pm;
-  pm.request_face_normals();
-  pm.request_vertex_normals();
-  OpenMesh::IO::Options opt;
-  EXPECT_TRUE(OpenMesh::IO::read_mesh(pm, path, opt));
-  pm.update_normals();
-  Mesh m;
-  for (const auto vh : pm.vertices()) {
-    m.positions.emplace_back(pm.point(vh)[0], pm.point(vh)[1], pm.point(vh)[2]);
-    m.normals.emplace_back(pm.normal(vh)[0], pm.normal(vh)[1], pm.normal(vh)[2]);
-  }
-  for (const auto fh : pm.faces()) {
-    std::vector<std::uint32_t> face;
-    for (const auto vh : pm.fv_range(fh)) face.push_back(static_cast<std::uint32_t>(vh.idx()));
-    m.faces.push_back(face);
-  }
-  return m;
-}
-
-void expectSameMesh(const Mesh& a, const Mesh& b) {
-  ASSERT_EQ(a.positions.size(), b.positions.size());
-  ASSERT_EQ(a.faces, b.faces);
-  for (std::size_t i = 0; i < a.positions.size(); ++i) {
-    EXPECT_EQ(std::memcmp(&a.positions[i], &b.positions[i], sizeof a.positions[i]), 0) << "vertex " << i;
-    EXPECT_EQ(std::memcmp(&a.normals[i], &b.normals[i], sizeof a.normals[i]), 0) << "normal " << i;
-  }
-}
 
 std::string errorOf(const std::string& text) {
   try {

@@ -2,8 +2,6 @@
 // shapes OpenMesh's reader handles give its mesh bit for bit; a malformed
 // one is refused with its line and column (binary: byte) before anything is
 // reserved for it.
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -12,40 +10,12 @@
 #include <random>
 #include <sstream>
 
+#include "scene/mesh_file_test_helpers.hpp"
 #include "scene/mesh_loader.hpp"
 #include "scene/ply_reader.hpp"
 
 namespace mpr {
 namespace {
-
-using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
-
-std::string writeFile(const std::string& name, const std::string& bytes) {
-  const std::string path = (std::filesystem::path(::testing::TempDir()) / name).string();
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
-}
-
-// OpenMesh's own reading of the file: points and faces after its importer.
-void expectAsOpenMesh(const std::string& path) {
-  PolyMesh pm;
-  OpenMesh::IO::Options opt;
-  ASSERT_TRUE(OpenMesh::IO::read_mesh(pm, path, opt));
-  const Mesh m = loadMeshFile(path);
-  ASSERT_EQ(m.positions.size(), pm.n_vertices());
-  ASSERT_EQ(m.faces.size(), pm.n_faces());
-  for (const auto vh : pm.vertices()) {
-    const auto& p = pm.point(vh);
-    const Vec3 q = m.positions[static_cast<std::size_t>(vh.idx())];
-    EXPECT_EQ(std::memcmp(&p[0], &q.x, 4) | std::memcmp(&p[1], &q.y, 4) | std::memcmp(&p[2], &q.z, 4), 0)
-        << "vertex " << vh.idx();
-  }
-  for (const auto fh : pm.faces()) {
-    std::vector<std::uint32_t> face;
-    for (const auto vh : pm.fv_range(fh)) face.push_back(static_cast<std::uint32_t>(vh.idx()));
-    EXPECT_EQ(face, m.faces[static_cast<std::size_t>(fh.idx())]);
-  }
-}
 
 std::string errorOf(const std::string& bytes) {
   try {
@@ -58,6 +28,7 @@ std::string errorOf(const std::string& bytes) {
 
 // Writes values in one of PLY's three formats.
 struct PlyWriter {
+  explicit PlyWriter(std::string f) : format(std::move(f)) {}
   std::string format;  // ascii, binary_little_endian, binary_big_endian
   std::ostringstream out;
   bool firstOnLine = true;
@@ -118,7 +89,7 @@ TEST(PlyReader, RandomFilesAsOpenMeshReadsThem) {
     }
     const std::string path = writeFile("random" + std::to_string(file) + ".ply", h.str() + w.out.str());
     SCOPED_TRACE(path + "\n" + h.str());
-    expectAsOpenMesh(path);
+    expectSameMesh(loadMeshFile(path), loadWithOpenMesh(path));
   }
 }
 
