@@ -33,7 +33,10 @@ MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsi
   bool inBegin = false;
   GLEmulator emulator(gl);
   for (const ScriptCommand& c : script.commands) {
-    if (c.kind == ScriptCommand::Kind::Snapshot) out.snapshots.push_back(collect(c.label, gl.framebuffer()));
+    if (c.kind == ScriptCommand::Kind::Snapshot) {
+      gl.prepareRead();
+      out.snapshots.push_back(collect(c.label, gl.framebuffer()));
+    }
     dispatch(emulator, c);
     if (c.kind != ScriptCommand::Kind::Call) continue;
     if (c.call == GLCall::Begin) inBegin = true;

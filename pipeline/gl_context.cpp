@@ -77,6 +77,7 @@ GLContext::GLContext(int width, int height, const HardwareProfile& profile)
       colorMaterialMode_(GL_AMBIENT_AND_DIFFUSE) {
   viewport(0, 0, width, height);
   scissorBox_ = {0, 0, width, height};
+  setterValues_.scissor = {0, 0, width, height};
   clearValues_.depth = fb_.profile().depthMax();
   // GL's initial masks are all ones; held at the stencil width.
   frag_.stencil.valueMask = frag_.stencil.writeMask = fb_.profile().stencilMax();
@@ -105,9 +106,7 @@ bool GLContext::checkOutsideBeginEnd() {
     setError(GL_INVALID_OPERATION);
     return false;
   }
-  // Every call that may change state closes the open GL_QUADS draw first,
-  // as Mesa's state setters do (FLUSH_VERTICES).
-  flushVertices();
+  // No flush here: each setter flushes when it changes state (changing()).
   return true;
 }
 
@@ -135,6 +134,8 @@ void GLContext::viewport(int x, int y, int w, int h) {
   if (w < 0 || h < 0) return setError(GL_INVALID_VALUE);
   w = std::min(w, Framebuffer::kMaxSide);
   h = std::min(h, Framebuffer::kMaxSide);
+  if (!changing(setterValues_.viewport == std::array<int, 4>{x, y, w, h})) return;
+  setterValues_.viewport = {x, y, w, h};
   viewportBox_ = {x, y, saturatingAdd(x, w), saturatingAdd(y, h)};
   // Mesa's viewport: scale = size / 2, translate = origin + size / 2.
   vpScaleX_ = static_cast<float>(w) / 2.0f;
@@ -146,6 +147,8 @@ void GLContext::viewport(int x, int y, int w, int h) {
 void GLContext::scissor(int x, int y, int w, int h) {
   if (!checkOutsideBeginEnd()) return;
   if (w < 0 || h < 0) return setError(GL_INVALID_VALUE);
+  if (!changing(setterValues_.scissor == std::array<int, 4>{x, y, w, h})) return;
+  setterValues_.scissor = {x, y, w, h};
   scissorBox_ = {x, y, saturatingAdd(x, w), saturatingAdd(y, h)};
 }
 
@@ -179,6 +182,10 @@ void GLContext::clear(std::uint32_t mask) {
   constexpr std::uint32_t kAll =
       GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~kAll) return setError(GL_INVALID_VALUE);
+  // No matrix analysis: _mesa_Clear validates only what a clear reads
+  // (measured: a glClear between glMultMatrix and glScalef leaves the
+  // modelview to be classified from its entries at the next analysis).
+  flushVertices();
   ClearBuffers which;
   which.color = mask & GL_COLOR_BUFFER_BIT;
   which.depth = mask & GL_DEPTH_BUFFER_BIT;
@@ -191,16 +198,20 @@ void GLContext::clear(std::uint32_t mask) {
 
 void GLContext::colorMask(bool r, bool g, bool b, bool a) {
   if (!checkOutsideBeginEnd()) return;
+  if (!changing(frag_.colorMask == std::array<bool, 4>{r, g, b, a})) return;
   frag_.colorMask = {r, g, b, a};
 }
 
 void GLContext::depthMask(bool flag) {
   if (!checkOutsideBeginEnd()) return;
+  if (!changing(frag_.depth.writeMask == flag)) return;
   frag_.depth.writeMask = flag;
 }
 
 void GLContext::stencilMask(std::uint32_t mask) {
   if (!checkOutsideBeginEnd()) return;
+  if (!changing(setterValues_.stencilWriteMask == mask)) return;
+  setterValues_.stencilWriteMask = mask;
   frag_.stencil.writeMask = mask & fb_.profile().stencilMax();
 }
 
@@ -208,31 +219,31 @@ void GLContext::stencilMask(std::uint32_t mask) {
 
 void GLContext::setCapability(GLenumValue cap, bool on) {
   if (!checkOutsideBeginEnd()) return;
-  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) {
-    lighting_.lights[cap - GL_LIGHT0].enabled = on;
-    return;
-  }
-  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + 6) {
-    clipPlaneEnabled_[cap - GL_CLIP_PLANE0] = on;
-    return;
-  }
-  switch (cap) {
-    case GL_STENCIL_TEST: frag_.stencil.enabled = on; return;
-    case GL_DEPTH_TEST: frag_.depth.enabled = on; return;
-    case GL_BLEND: frag_.blend.enabled = on; return;
-    case GL_ALPHA_TEST: frag_.alpha.enabled = on; return;
-    case GL_SCISSOR_TEST: scissorEnabled_ = on; return;
-    case GL_CULL_FACE: cullEnabled_ = on; return;
-    case GL_FOG: fog_.enabled = on; return;
-    case GL_LIGHTING: lightingEnabled_ = on; return;
-    case GL_NORMALIZE: normalize_ = on; return;
-    case GL_DITHER: ditherEnabled_ = on; return;
-    case GL_COLOR_MATERIAL:
-      colorMaterialEnabled_ = on;
-      if (on) applyColorMaterial();
-      return;
-  }
-  setError(GL_INVALID_ENUM);
+  bool* flag = nullptr;
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) flag = &lighting_.lights[cap - GL_LIGHT0].enabled;
+  else if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + 6) flag = &clipPlaneEnabled_[cap - GL_CLIP_PLANE0];
+  else
+    switch (cap) {
+      case GL_STENCIL_TEST: flag = &frag_.stencil.enabled; break;
+      case GL_DEPTH_TEST: flag = &frag_.depth.enabled; break;
+      case GL_BLEND: flag = &frag_.blend.enabled; break;
+      case GL_ALPHA_TEST: flag = &frag_.alpha.enabled; break;
+      case GL_SCISSOR_TEST: flag = &scissorEnabled_; break;
+      case GL_CULL_FACE: flag = &cullEnabled_; break;
+      case GL_FOG: flag = &fog_.enabled; break;
+      case GL_LIGHTING: flag = &lightingEnabled_; break;
+      case GL_NORMALIZE: flag = &normalize_; break;
+      case GL_DITHER: flag = &ditherEnabled_; break;
+      case GL_COLOR_MATERIAL: flag = &colorMaterialEnabled_; break;
+    }
+  if (!flag) return setError(GL_INVALID_ENUM);
+  // _mesa_set_enable: every capability returns early when already so.
+  if (!changing(*flag == on)) return;
+  *flag = on;
+  if (cap == GL_COLOR_MATERIAL && on) applyColorMaterial();
+  // Enabling a clip plane takes it into clip space by the projection's
+  // inverse, analysed first.
+  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + 6 && on) analyseMatrices(false, true);
 }
 
 bool GLContext::isEnabled(GLenumValue cap) const {
@@ -258,6 +269,11 @@ void GLContext::stencilFunc(GLenumValue func, int ref, std::uint32_t mask) {
   if (!checkOutsideBeginEnd()) return;
   const auto f = compareFuncFromGL(func);
   if (!f) return setError(GL_INVALID_ENUM);
+  // Mesa compares the raw reference and mask (stencil_func).
+  if (!changing(frag_.stencil.func == *f && setterValues_.stencilRef == ref && setterValues_.stencilValueMask == mask))
+    return;
+  setterValues_.stencilRef = ref;
+  setterValues_.stencilValueMask = mask;
   frag_.stencil.func = *f;
   // GL: "ref is clamped to the range [0, 2^s - 1]".
   frag_.stencil.ref = static_cast<std::uint32_t>(std::clamp<int>(ref, 0, fb_.profile().stencilMax()));
@@ -268,6 +284,7 @@ void GLContext::stencilOp(GLenumValue sfail, GLenumValue dpfail, GLenumValue dpp
   if (!checkOutsideBeginEnd()) return;
   const auto a = stencilOpFromGL(sfail), b = stencilOpFromGL(dpfail), c = stencilOpFromGL(dppass);
   if (!a || !b || !c) return setError(GL_INVALID_ENUM);
+  if (!changing(frag_.stencil.sfail == *a && frag_.stencil.dpfail == *b && frag_.stencil.dppass == *c)) return;
   frag_.stencil.sfail = *a;
   frag_.stencil.dpfail = *b;
   frag_.stencil.dppass = *c;
@@ -277,6 +294,7 @@ void GLContext::depthFunc(GLenumValue func) {
   if (!checkOutsideBeginEnd()) return;
   const auto f = compareFuncFromGL(func);
   if (!f) return setError(GL_INVALID_ENUM);
+  if (!changing(frag_.depth.func == *f)) return;
   frag_.depth.func = *f;
 }
 
@@ -286,6 +304,8 @@ void GLContext::depthRange(double n, double f) {
   // window z scale and offset llvmpipe uses come from the float values:
   // measured, a range such as [0.99140067, 0.994552] otherwise moves depths
   // near 1 by a unit (depth_coincident_zfight.gls).
+  // Mesa compares the call's values with the stored, clamped ones.
+  if (!changing(depthNear_ == n && depthFar_ == f)) return;
   depthNear_ = static_cast<float>(std::isnan(n) ? 0.0 : std::clamp(n, 0.0, 1.0));
   depthFar_ = static_cast<float>(std::isnan(f) ? 0.0 : std::clamp(f, 0.0, 1.0));
 }
@@ -294,6 +314,7 @@ void GLContext::blendFunc(GLenumValue src, GLenumValue dst) {
   if (!checkOutsideBeginEnd()) return;
   const auto s = blendFactorFromGL(src), d = blendFactorFromGL(dst);
   if (!s || !d) return setError(GL_INVALID_ENUM);
+  if (!changing(frag_.blend.src == *s && frag_.blend.dst == *d)) return;
   frag_.blend.src = *s;
   frag_.blend.dst = *d;
 }
@@ -302,6 +323,8 @@ void GLContext::alphaFunc(GLenumValue func, float ref) {
   if (!checkOutsideBeginEnd()) return;
   const auto f = compareFuncFromGL(func);
   if (!f) return setError(GL_INVALID_ENUM);
+  if (!changing(frag_.alpha.func == *f && setterValues_.alphaRef == ref)) return;  // AlphaRefUnclamped
+  setterValues_.alphaRef = ref;
   frag_.alpha.func = *f;
   frag_.alpha.ref = std::isnan(ref) ? 0.0f : clamp01(ref);
 }
@@ -309,18 +332,21 @@ void GLContext::alphaFunc(GLenumValue func, float ref) {
 void GLContext::cullFace(GLenumValue mode) {
   if (!checkOutsideBeginEnd()) return;
   if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return setError(GL_INVALID_ENUM);
+  if (!changing(cullMode_ == mode)) return;
   cullMode_ = mode;
 }
 
 void GLContext::frontFace(GLenumValue mode) {
   if (!checkOutsideBeginEnd()) return;
   if (mode != GL_CW && mode != GL_CCW) return setError(GL_INVALID_ENUM);
+  if (!changing(frontFace_ == mode)) return;
   frontFace_ = mode;
 }
 
 void GLContext::shadeModel(GLenumValue mode) {
   if (!checkOutsideBeginEnd()) return;
   if (mode != GL_FLAT && mode != GL_SMOOTH) return setError(GL_INVALID_ENUM);
+  if (!changing(flatShading_ == (mode == GL_FLAT))) return;
   flatShading_ = mode == GL_FLAT;
 }
 
@@ -333,25 +359,34 @@ void GLContext::fogf(GLenumValue pname, float param) {
       // be undefined behaviour to convert).
       if (!(param > -2147483648.0f && param < 2147483648.0f)) return setError(GL_INVALID_ENUM);
       const auto m = static_cast<GLenumValue>(static_cast<std::int32_t>(param));
-      if (m == GL_LINEAR) fog_.mode = FogMode::Linear;
-      else if (m == GL_EXP) fog_.mode = FogMode::Exp;
-      else if (m == GL_EXP2) fog_.mode = FogMode::Exp2;
+      FogMode mode;
+      if (m == GL_LINEAR) mode = FogMode::Linear;
+      else if (m == GL_EXP) mode = FogMode::Exp;
+      else if (m == GL_EXP2) mode = FogMode::Exp2;
       else return setError(GL_INVALID_ENUM);
+      if (changing(fog_.mode == mode)) fog_.mode = mode;
       return;
     }
     case GL_FOG_DENSITY:
       if (param < 0.0f) return setError(GL_INVALID_VALUE);
-      fog_.density = param;
+      if (changing(fog_.density == param)) fog_.density = param;
       return;
     case GL_FOG_COLOR:
       if (departures_ & kScalarCallVectorParam) {
-        fog_.color = Vec4(clamp01(param), 0, 0, 0);
+        const Vec4 color(clamp01(param), 0, 0, 0);
+        if (changing(fog_.color == color)) fog_.color = color;
         return;
       }
       break;
-    case GL_FOG_START: fog_.start = param; return;
-    case GL_FOG_END: fog_.end = param; return;
-    case GL_FOG_INDEX: return;  // colour-index mode only
+    case GL_FOG_START:
+      if (changing(fog_.start == param)) fog_.start = param;
+      return;
+    case GL_FOG_END:
+      if (changing(fog_.end == param)) fog_.end = param;
+      return;
+    case GL_FOG_INDEX:  // colour-index mode only, but Mesa stores it (and flushes)
+      if (changing(setterValues_.fogIndex == param)) setterValues_.fogIndex = param;
+      return;
   }
   setError(GL_INVALID_ENUM);
 }
@@ -360,7 +395,10 @@ void GLContext::fogfv(GLenumValue pname, const float* p, int count) {
   if (!checkOutsideBeginEnd()) return;
   if (pname == GL_FOG_COLOR) {
     if (count < 4) return setError(GL_INVALID_VALUE);
-    fog_.color = Vec4(clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), clamp01(p[3]));
+    // Compared clamped: a colour that clamps to the stored one flushes
+    // nothing (measured against llvmpipe).
+    const Vec4 color(clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), clamp01(p[3]));
+    if (changing(fog_.color == color)) fog_.color = color;
     return;
   }
   if (count < 1) return setError(GL_INVALID_VALUE);
@@ -370,18 +408,19 @@ void GLContext::fogfv(GLenumValue pname, const float* p, int count) {
 void GLContext::hint(GLenumValue target, GLenumValue mode) {
   if (!checkOutsideBeginEnd()) return;
   if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return setError(GL_INVALID_ENUM);
+  std::size_t slot;
   switch (target) {
-    case GL_FOG_HINT:
-      // GL_FASTEST: fog per vertex; otherwise per fragment, as Mesa does.
-      fog_.perFragment = mode != GL_FASTEST || (departures_ & kFogHintIgnored);
-      return;
-    case GL_PERSPECTIVE_CORRECTION_HINT:
-    case GL_POINT_SMOOTH_HINT:
-    case GL_LINE_SMOOTH_HINT:
-    case GL_POLYGON_SMOOTH_HINT:
-      return;  // accepted; this pipeline always interpolates perspective-correctly
+    case GL_FOG_HINT: slot = 0; break;
+    case GL_PERSPECTIVE_CORRECTION_HINT: slot = 1; break;  // this pipeline always interpolates perspective-correctly
+    case GL_POINT_SMOOTH_HINT: slot = 2; break;
+    case GL_LINE_SMOOTH_HINT: slot = 3; break;
+    case GL_POLYGON_SMOOTH_HINT: slot = 4; break;
+    default: return setError(GL_INVALID_ENUM);
   }
-  setError(GL_INVALID_ENUM);
+  if (!changing(setterValues_.hints[slot] == mode)) return;
+  setterValues_.hints[slot] = mode;
+  // GL_FASTEST: fog per vertex; otherwise per fragment, as Mesa does.
+  if (target == GL_FOG_HINT) fog_.perFragment = mode != GL_FASTEST || (departures_ & kFogHintIgnored);
 }
 
 // --- accumulation ---------------------------------------------------------------
@@ -397,6 +436,8 @@ void GLContext::accum(GLenumValue op, float value) {
     case GL_ADD: a = AccumOp::Add; break;
     default: return setError(GL_INVALID_ENUM);
   }
+  flushVertices();
+  analyseMatrices(true, true);  // _mesa_Accum validates the state
   // Accumulation works on the scissored window, like a clear.
   const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
   forRowBlocks(region, [&](const PixelRect& rows) { accumulate(fb_, rows, a, value, frag_.colorMask); });

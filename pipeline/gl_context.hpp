@@ -75,6 +75,12 @@ class GLContext {
   const PipelineCounters& counters() const { settle(); return counters_; }
   // Closes the open GL_QUADS draw now (what Mesa's FLUSH_VERTICES does).
   void flushVertices();
+  // What glReadPixels does before it reads (a @snapshot in Mesa's replay):
+  // the stored vertices drawn and the state validated, matrices analysed.
+  void prepareRead() {
+    flushVertices();
+    analyseMatrices(true, true);
+  }
   void closeQuadDraw();  // the open GL_QUADS draw only, not the vbo's flush (a glBegin of another mode)
 
   // --- per-pixel inspection for tests -----------------------------------
@@ -251,9 +257,24 @@ class GLContext {
   bool anyOutsideDrawPlanes(const std::vector<ClipVertex>& processed, std::size_t count) const;
 
   void setError(GLenumValue e);
-  bool checkOutsideBeginEnd();
+  bool checkOutsideBeginEnd();  // GL_INVALID_OPERATION inside glBegin/glEnd; no flush
+  // Mesa's setters return early when a call leaves their state as it is and
+  // flush the stored vertices (FLUSH_VERTICES) before they change it: an open
+  // GL_QUADS draw stays open over a call that changes nothing (measured
+  // against llvmpipe call by call: tests/conformance/repro/redundant_state_quads.gls).
+  bool changing(bool unchanged) {
+    if (unchanged) return false;
+    flushVertices();
+    return true;
+  }
   void setCapability(GLenumValue cap, bool on);
   MatrixStack& currentStack();
+  void setTop(const Mat4& m, unsigned addedFlags);  // flushes, replaces the top, adds Mesa's flags
+  void multiplyTop(const Mat4& m);                  // glMultMatrix: nothing at all for the identity
+  // _math_matrix_analyse of the tops where Mesa validates its state (glBegin,
+  // glAccum, glReadPixels; not glClear) or reads an inverse (glClipPlane,
+  // glEnable of a clip plane, glLightfv of a spot direction).
+  void analyseMatrices(bool modelview, bool projection);
   void afterMatrixChange();
   void applyColorMaterial();
   // The vertex through transform and lighting; `lighting` is the draw's
@@ -321,8 +342,23 @@ class GLContext {
   // (clears and accumulation: a pixel's result is its own).
   void forRowBlocks(const PixelRect& region, const std::function<void(const PixelRect&)>& work);
 
+  // Values as Mesa's setters store and compare them, where MPR keeps them
+  // converted (a stencil mask at the buffer's width, a clamped reference):
+  // Mesa compares the call's raw arguments with these (stencil.c, blend.c).
+  struct MesaSetterValues {
+    int stencilRef = 0;
+    std::uint32_t stencilValueMask = 0xFF, stencilWriteMask = 0xFF;  // _mesa_init_stencil
+    float alphaRef = 0.0f;                                              // AlphaRefUnclamped
+    std::array<int, 4> scissor{};                                       // x, y, width, height
+    std::array<int, 4> viewport{};                                      // sizes clamped to the maximum
+    float fogIndex = 0.0f;                                              // colour-index mode only
+    // GL_FOG_HINT, GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_, GL_LINE_, GL_POLYGON_SMOOTH_HINT
+    std::array<GLenumValue, 5> hints{0x1100, 0x1100, 0x1100, 0x1100, 0x1100};  // GL_DONT_CARE
+  };
+
   Framebuffer fb_;
   std::unique_ptr<WorkerPool> pool_;
+  MesaSetterValues setterValues_;
   std::int64_t pixelsPerShare_ = kPixelsPerShare;
   GLenumValue error_ = 0;
   PipelineCounters counters_;

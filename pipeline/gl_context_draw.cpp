@@ -48,6 +48,7 @@ void GLContext::begin(GLenumValue mode) {
     case GL_POLYGON: primitive_ = PrimitiveType::Polygon; break;
     default: return setError(GL_INVALID_ENUM);
   }
+  analyseMatrices(true, true);  // vbo_exec_Begin validates the state (_mesa_update_state)
   // Only another GL_QUADS block can join the open quad draw.
   if (primitive_ != PrimitiveType::Quads) closeQuadDraw();
   // vbo_exec_Begin: attributes set since the last flush but no vertex (all
@@ -194,12 +195,12 @@ void GLContext::end() {
   // the same for an affine modelview, not for a projective one (the
   // projective_normal_matrix departure).
   normalMatrix_ = (departures_ & kProjectiveNormalMatrix)
-                      ? glm::transpose(glm::mat3(mesaInverse(modelview_.top())))
+                      ? glm::transpose(glm::mat3(modelview_.mesaTop().inverse))
                       : glm::transpose(glm::inverse(glm::mat3(modelview_.top())));
   clipPlanesClip_ = viewVolumePlanes();
   // _mesa_update_clip_plane: the eye plane by the projection's inverse as
   // Mesa keeps it (the clip-space planes st_atom_clip.c hands the draw module).
-  const Mat4 projInverse = mesaInverse(projection_.top());
+  const Mat4& projInverse = projection_.mesaTop().inverse;  // analysed at glBegin
   for (int i = 0; i < 6; ++i)
     if (clipPlaneEnabled_[i]) clipPlanesClip_.push_back(mesaTransformRowVector(clipPlanesEye_[i], projInverse));
   userPlanesClip_.assign(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());

@@ -42,28 +42,33 @@ void GLContext::lightfv(GLenumValue light, GLenumValue pname, const float* p, in
   if (count < expectedCount(pname)) return setError(GL_INVALID_VALUE);
   LightSource& l = lighting_.lights[light - GL_LIGHT0];
   const Mat4& mv = modelview_.top();
+  // _mesa_light compares the value (positions and directions once in eye
+  // space) with the stored one and flushes only on a change.
+  auto set = [&](auto& target, const auto& value) {
+    if (changing(target == value)) target = value;
+  };
   switch (pname) {
-    case GL_AMBIENT: l.ambient = vec4From(p); return;
-    case GL_DIFFUSE: l.diffuse = vec4From(p); return;
-    case GL_SPECULAR: l.specular = vec4From(p); return;
-    case GL_POSITION: l.position = mv * vec4From(p); return;  // eye space at specification
-    case GL_SPOT_DIRECTION: l.spotDirection = glm::mat3(mv) * Vec3(p[0], p[1], p[2]); return;
+    case GL_AMBIENT: return set(l.ambient, vec4From(p));
+    case GL_DIFFUSE: return set(l.diffuse, vec4From(p));
+    case GL_SPECULAR: return set(l.specular, vec4From(p));
+    case GL_POSITION: return set(l.position, mv * vec4From(p));  // eye space at specification
+    case GL_SPOT_DIRECTION:
+      analyseMatrices(true, false);  // _mesa_Lightfv analyses the modelview first
+      return set(l.spotDirection, glm::mat3(mv) * Vec3(p[0], p[1], p[2]));
     case GL_SPOT_EXPONENT:
       if (p[0] < 0.0f || p[0] > 128.0f) return setError(GL_INVALID_VALUE);
-      l.spotExponent = p[0];
-      return;
+      return set(l.spotExponent, p[0]);
     case GL_SPOT_CUTOFF:
       if ((p[0] < 0.0f || p[0] > 90.0f) && p[0] != 180.0f) return setError(GL_INVALID_VALUE);
-      l.spotCutoff = p[0];
-      return;
+      return set(l.spotCutoff, p[0]);
     case GL_CONSTANT_ATTENUATION:
     case GL_LINEAR_ATTENUATION:
     case GL_QUADRATIC_ATTENUATION:
       if (p[0] < 0.0f) return setError(GL_INVALID_VALUE);
-      (pname == GL_CONSTANT_ATTENUATION ? l.constantAttenuation
-       : pname == GL_LINEAR_ATTENUATION ? l.linearAttenuation
-                                        : l.quadraticAttenuation) = p[0];
-      return;
+      return set(pname == GL_CONSTANT_ATTENUATION ? l.constantAttenuation
+                 : pname == GL_LINEAR_ATTENUATION ? l.linearAttenuation
+                                                  : l.quadraticAttenuation,
+                 p[0]);
   }
   setError(GL_INVALID_ENUM);
 }
@@ -84,10 +89,13 @@ void GLContext::lightModelf(GLenumValue pname, float param) {
 void GLContext::lightModelfv(GLenumValue pname, const float* p, int count) {
   if (!checkOutsideBeginEnd()) return;
   if (count < expectedCount(pname)) return setError(GL_INVALID_VALUE);
+  auto set = [&](auto& target, const auto& value) {
+    if (changing(target == value)) target = value;
+  };
   switch (pname) {
-    case GL_LIGHT_MODEL_AMBIENT: lighting_.model.ambient = vec4From(p); return;
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: lighting_.model.localViewer = p[0] != 0.0f; return;
-    case GL_LIGHT_MODEL_TWO_SIDE: lighting_.model.twoSide = p[0] != 0.0f; return;
+    case GL_LIGHT_MODEL_AMBIENT: return set(lighting_.model.ambient, vec4From(p));
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: return set(lighting_.model.localViewer, p[0] != 0.0f);
+    case GL_LIGHT_MODEL_TWO_SIDE: return set(lighting_.model.twoSide, p[0] != 0.0f);
   }
   setError(GL_INVALID_ENUM);
 }
@@ -164,6 +172,7 @@ void GLContext::colorMaterial(GLenumValue face, GLenumValue mode) {
   if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
       mode != GL_AMBIENT_AND_DIFFUSE)
     return setError(GL_INVALID_ENUM);
+  if (!changing(colorMaterialFace_ == face && colorMaterialMode_ == mode)) return;
   colorMaterialFace_ = face;
   colorMaterialMode_ = mode;
   if (colorMaterialEnabled_) applyColorMaterial();

@@ -13,25 +13,6 @@ std::string glErrorReport(const ScriptCommand& c, std::uint32_t error) {
   return std::to_string(c.line) + ": " + std::string(glErrorName(error)) + " in " + std::string(glCallName(c.call));
 }
 
-namespace {
-// Calls that may join the open GL_QUADS draw (GLContext::flushVertices):
-// vertex attributes, glEnd, and further GL_QUADS blocks. Before any other
-// command the runner closes that draw, so that its fragments belong to the
-// call, pass and snapshot that made them.
-bool mayJoinQuadDraw(const ScriptCommand& c) {
-  if (c.kind != ScriptCommand::Kind::Call) return false;
-  switch (c.call) {
-    case GLCall::Begin: return !c.args.empty() && c.args[0].bits == GL_QUADS;
-    case GLCall::Color3f: case GLCall::Color4f: case GLCall::Color3ub: case GLCall::Color4ub:
-    case GLCall::Normal3f: case GLCall::Materialf: case GLCall::Materialfv:
-    case GLCall::Vertex2f: case GLCall::Vertex3f: case GLCall::Vertex4f:
-    case GLCall::End: case GLCall::Rectf:
-      return true;
-    default:
-      return false;
-  }
-}
-}  // namespace
 
 void executeCall(GLContext& gl, const ScriptCommand& cmd) {
   GLEmulator emulator(gl);
@@ -44,10 +25,10 @@ ScriptExecutor::ScriptExecutor(GLContext& gl, const ScriptHooks& hooks)
 ScriptExecutor::~ScriptExecutor() = default;
 
 void ScriptExecutor::execute(const ScriptCommand& cmd) {
-  // glBegin of another mode closes the quad draw but is no flush of the
-  // vbo (its vertex format stays).
-  if (cmd.kind == ScriptCommand::Kind::Call && cmd.call == GLCall::Begin) gl_.closeQuadDraw();
-  else if (!mayJoinQuadDraw(cmd)) gl_.flushVertices();
+  // No flush here: the context flushes where Mesa does (a call that changes
+  // state, a read of the buffers), so a script runs exactly as mpr conform
+  // replays it on MPR. Fragments of a GL_QUADS draw still open (Mesa's vbo
+  // merging blocks, GLContext::drawQuadsPiece) land at the call that closes it.
   switch (cmd.kind) {
     case ScriptCommand::Kind::WindowMap:
     case ScriptCommand::Kind::FragmentCount:
@@ -57,6 +38,7 @@ void ScriptExecutor::execute(const ScriptCommand& cmd) {
       if (hooks_.onPass) hooks_.onPass(cmd);
       break;
     case ScriptCommand::Kind::Snapshot:
+      gl_.prepareRead();
       if (hooks_.onSnapshot) hooks_.onSnapshot(cmd, gl_);
       break;
     case ScriptCommand::Kind::Probe:

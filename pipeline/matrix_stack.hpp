@@ -2,31 +2,50 @@
 // A GL matrix stack: a top matrix and the saved ones below it.
 #include <vector>
 
+#include "pipeline/mesa_matrix_inverse.hpp"
 #include "util/vecmath.hpp"
 
 namespace mpr {
 
 class MatrixStack {
  public:
-  explicit MatrixStack(int maxDepth) : maxDepth_(maxDepth), stack_{Mat4(1.0f)} {}
+  explicit MatrixStack(int maxDepth) : maxDepth_(maxDepth), stack_{Mat4(1.0f)}, mesa_(1) {}
   const Mat4& top() const { return stack_.back(); }
   Mat4& top() { return stack_.back(); }
+  // Mesa's flags, class and inverse of the top (pushed and popped with it).
+  MesaMatrixState& mesaTop() { return mesa_.back(); }
+  const MesaMatrixState& mesaTop() const { return mesa_.back(); }
+  const Mat4& analysedInverse() {  // _math_matrix_analyse, then the inverse Mesa keeps
+    mesaAnalyse(stack_.back(), mesa_.back());
+    return mesa_.back().inverse;
+  }
   int depth() const { return static_cast<int>(stack_.size()); }
   int maxDepth() const { return maxDepth_; }
+  // The matrix a pop would make current; the top itself on an empty stack.
+  const Mat4& below() const { return stack_.size() > 1 ? stack_[stack_.size() - 2] : stack_.back(); }
   bool push() {  // false on overflow (GL_STACK_OVERFLOW)
     if (depth() >= maxDepth_) return false;
     stack_.push_back(stack_.back());
+    mesa_.push_back(mesa_.back());
+    changedSincePush_ = false;
     return true;
   }
   bool pop() {  // false on underflow (GL_STACK_UNDERFLOW)
     if (depth() <= 1) return false;
     stack_.pop_back();
+    mesa_.pop_back();
+    changedSincePush_ = true;
     return true;
   }
+  // Mesa's ChangedSincePush: a pop flushes only after the top was changed.
+  bool changedSincePush() const { return changedSincePush_; }
+  void markChanged() { changedSincePush_ = true; }
 
  private:
   int maxDepth_;
   std::vector<Mat4> stack_;
+  std::vector<MesaMatrixState> mesa_;
+  bool changedSincePush_ = true;
 };
 
 }  // namespace mpr

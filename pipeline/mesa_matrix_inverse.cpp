@@ -11,12 +11,7 @@ namespace {
 
 using Floats = std::array<float, 16>;  // Mesa's column-major m[16]
 
-// m_matrix.c's classes and geometry flags (only what the inverse reads).
-enum class MatrixClass { General, Identity, NoRotation3d, Perspective, TwoD, NoRotation2d, ThreeD };
-enum : unsigned {
-  kGeneral = 1u << 0, kRotation = 1u << 1, kTranslation = 1u << 2, kUniformScale = 1u << 3,
-  kGeneralScale = 1u << 4, kGeneral3d = 1u << 5,
-};
+using namespace mesa_matrix;
 
 float& at(Floats& m, int row, int col) { return m[static_cast<std::size_t>(col * 4 + row)]; }
 float at(const Floats& m, int row, int col) { return m[static_cast<std::size_t>(col * 4 + row)]; }
@@ -197,6 +192,23 @@ bool invert3d(const Floats& in, Floats& out, unsigned flags) {
   return true;
 }
 
+// analyse_from_flags: the class from the geometry flags the calls since the
+// last analysis added (TEST_MAT_FLAGS), and a few entries.
+MatrixClass classFromFlags(const Floats& m, unsigned flags) {
+  auto only = [flags](unsigned allowed) { return (kGeometry & ~allowed & flags) == 0; };
+  if (only(0)) return MatrixClass::Identity;
+  if (only(kTranslation | kUniformScale | kGeneralScale))
+    return m[10] == 1.0f && m[14] == 0.0f ? MatrixClass::NoRotation2d : MatrixClass::NoRotation3d;
+  if (only(kRotation | kTranslation | kUniformScale | kGeneralScale | kGeneral3d))
+    return m[8] == 0.0f && m[9] == 0.0f && m[2] == 0.0f && m[6] == 0.0f && m[10] == 1.0f && m[14] == 0.0f
+               ? MatrixClass::TwoD
+               : MatrixClass::ThreeD;
+  if (m[4] == 0.0f && m[12] == 0.0f && m[1] == 0.0f && m[13] == 0.0f && m[2] == 0.0f && m[6] == 0.0f &&
+      m[3] == 0.0f && m[7] == 0.0f && m[11] == -1.0f && m[15] == 0.0f)
+    return MatrixClass::Perspective;
+  return MatrixClass::General;
+}
+
 bool invertNoRotation(const Floats& in, Floats& out, unsigned flags, int dims) {
   for (int i = 0; i < dims; ++i)
     if (at(in, i, i) == 0.0f) return false;
@@ -209,27 +221,70 @@ bool invertNoRotation(const Floats& in, Floats& out, unsigned flags, int dims) {
 
 }  // namespace
 
-Mat4 mesaInverse(const Mat4& matrix) {
+namespace {
+
+Floats floatsOf(const Mat4& matrix) {
   Floats m{};
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) at(m, r, c) = matrix[c][r];
-  Floats out = identity();
-  const auto [kind, flags] = analyse(m);
-  bool ok = true;
+  return m;
+}
+
+// matrix_invert: the routine of the class (inv_mat_tab: the perspective
+// class by the general routine, 2D by the 3D one); false where singular.
+bool invertByClass(const Floats& m, MatrixClass kind, unsigned flags, Floats& out) {
+  out = identity();
   switch (kind) {
-    case MatrixClass::Identity: out = identity(); break;
+    case MatrixClass::Identity: return true;
     case MatrixClass::General:
-    case MatrixClass::Perspective: ok = invertGeneral(m, out); break;
+    case MatrixClass::Perspective: return invertGeneral(m, out);
     case MatrixClass::TwoD:
-    case MatrixClass::ThreeD: ok = invert3d(m, out, flags); break;
-    case MatrixClass::NoRotation3d: ok = invertNoRotation(m, out, flags, 3); break;
-    case MatrixClass::NoRotation2d: ok = invertNoRotation(m, out, flags, 2); break;
+    case MatrixClass::ThreeD: return invert3d(m, out, flags);
+    case MatrixClass::NoRotation3d: return invertNoRotation(m, out, flags, 3);
+    case MatrixClass::NoRotation2d: return invertNoRotation(m, out, flags, 2);
   }
-  if (!ok) out = identity();  // matrix_invert: MAT_FLAG_SINGULAR, identity
+  return false;
+}
+
+Mat4 matrixOf(const Floats& out) {
   Mat4 result;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) result[c][r] = at(out, r, c);
   return result;
+}
+
+}  // namespace
+
+Mat4 mesaInverse(const Mat4& matrix) {
+  const Floats m = floatsOf(matrix);
+  const auto [kind, flags] = analyse(m);
+  Floats out;
+  if (!invertByClass(m, kind, flags, out)) out = identity();  // matrix_invert: MAT_FLAG_SINGULAR, identity
+  return matrixOf(out);
+}
+
+void mesaAnalyse(const Mat4& matrix, MesaMatrixState& state) {
+  const Floats m = floatsOf(matrix);
+  if (state.flags & kDirtyType) {
+    if (state.flags & kDirtyFlags) {
+      const auto [kind, flags] = analyse(m);
+      state.type = kind;
+      state.flags = (state.flags & ~kGeometry) | flags;
+    } else {
+      state.type = classFromFlags(m, state.flags);
+    }
+  }
+  if (state.flags & kDirtyInverse) {
+    Floats out;
+    if (invertByClass(m, state.type, state.flags & kGeometry, out)) {  // TEST_MAT_FLAGS: geometry bits only
+      state.flags &= ~kSingular;
+    } else {
+      state.flags |= kSingular;
+      out = identity();
+    }
+    state.inverse = matrixOf(out);
+  }
+  state.flags &= ~(kDirtyType | kDirtyFlags | kDirtyInverse);
 }
 
 Vec4 mesaTransformRowVector(const Vec4& v, const Mat4& m) {

@@ -8,7 +8,38 @@
 
 namespace mpr {
 
-// Mesa's inverse of m; the identity where Mesa finds m singular.
+namespace mesa_matrix {
+// m_matrix.h's geometry flags and dirty bits.
+enum : unsigned {
+  kGeneral = 1u << 0, kRotation = 1u << 1, kTranslation = 1u << 2, kUniformScale = 1u << 3,
+  kGeneralScale = 1u << 4, kGeneral3d = 1u << 5, kPerspective = 1u << 6, kSingular = 1u << 7,
+  kDirtyType = 1u << 8, kDirtyFlags = 1u << 9, kDirtyInverse = 1u << 10,
+  kGeometry = 0xFFu, kDirty = kDirtyType | kDirtyFlags | kDirtyInverse,
+};
+}  // namespace mesa_matrix
+
+// m_matrix.h's matrix classes.
+enum class MatrixClass { General, Identity, NoRotation3d, Perspective, TwoD, NoRotation2d, ThreeD };
+
+// What Mesa keeps beside a matrix (GLmatrix): its flags, class and inverse.
+// The calls that change the matrix add geometry flags and dirty bits
+// (_math_matrix_translate adds MAT_FLAG_TRANSLATION, glLoadMatrix makes it
+// general and wholly dirty, glLoadIdentity clears only the dirty bits);
+// mesaAnalyse classifies it when Mesa does, from the entries when the flags
+// are dirty and from the flags otherwise, and inverts it by its class. So
+// the inverse depends on the calls that made the matrix, not on its entries
+// alone (tests/conformance/repro/matrix_flags_after_load_identity.gls).
+struct MesaMatrixState {
+  unsigned flags = 0;  // _math_matrix_ctr: identity, no flags
+  MatrixClass type = MatrixClass::Identity;
+  Mat4 inverse{1.0f};
+};
+
+// _math_matrix_analyse.
+void mesaAnalyse(const Mat4& m, MesaMatrixState& state);
+
+// Mesa's inverse of m classified from its entries alone (analyse_from_scratch);
+// the identity where Mesa finds m singular.
 Mat4 mesaInverse(const Mat4& m);
 
 // _mesa_transform_vector: the row vector v times m, each sum left to right.

@@ -7,6 +7,11 @@ namespace {
 // fragment, which the observer reports.
 bool writesWithoutFragments(const ScriptCommand& c) { return c.call == GLCall::Clear || c.call == GLCall::Accum; }
 
+// The calls whose vertices make fragments. A GL_QUADS draw may be drawn at
+// a later call (Mesa's vbo keeps it open over calls that change no state,
+// GLContext::drawQuadsPiece); its fragments belong to the call that issued it.
+bool issuesVertices(const ScriptCommand& c) { return c.call == GLCall::End || c.call == GLCall::Rectf; }
+
 }  // namespace
 
 PixelEventRecorder::PixelEventRecorder(GLContext& gl, PixelRect region, Sink sink)
@@ -16,18 +21,18 @@ PixelEventRecorder::PixelEventRecorder(GLContext& gl, PixelRect region, Sink sin
   rankCall_.assign(n, 0);
   rank_.assign(n, 0);
   gl_.fragmentObserver = [this](const FragmentEvent& e) {
-    if (e.x < region_.x0 || e.x >= region_.x1 || e.y < region_.y0 || e.y >= region_.y1 || !call_) return;
+    if (e.x < region_.x0 || e.x >= region_.x1 || e.y < region_.y0 || e.y >= region_.y1 || !drawCall_) return;
     const std::size_t s = slot(e.x, e.y);
-    if (rankCall_[s] != callSerial_) {
-      rankCall_[s] = callSerial_;
+    if (rankCall_[s] != drawSerial_) {
+      rankCall_[s] = drawSerial_;
       rank_[s] = 0;
     }
     PixelEvent p;
     p.kind = PixelEvent::Kind::Fragment;
     p.x = e.x;
     p.y = e.y;
-    p.pass = pass_;
-    p.call = call_;
+    p.pass = drawPass_;
+    p.call = drawCall_;
     p.fragment = ++rank_[s];
     p.fate = e.fate;
     p.stencilBefore = e.stencilBefore;
@@ -50,6 +55,11 @@ void PixelEventRecorder::beforeCall(const ScriptCommand& call) {
   closeCall();
   call_ = &call;
   ++callSerial_;
+  if (issuesVertices(call)) {
+    drawCall_ = &call;
+    drawSerial_ = callSerial_;
+    drawPass_ = pass_;
+  }
   if (!writesWithoutFragments(call)) return;
   before_.clear();
   before_.reserve(rank_.size());

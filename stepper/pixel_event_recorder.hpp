@@ -64,6 +64,9 @@ class PixelEventRecorder {
   int pass_ = 0;
   const ScriptCommand* call_ = nullptr;
   std::uint32_t callSerial_ = 0;
+  const ScriptCommand* drawCall_ = nullptr;  // the last call that issued vertices: fragments are its
+  std::uint32_t drawSerial_ = 0;
+  int drawPass_ = 0;
   // Fragment ranks: rank_[slot] counts the fragments of call rankCall_[slot].
   std::vector<std::uint32_t> rankCall_;
   std::vector<int> rank_;
