@@ -239,6 +239,7 @@ void GLContext::setCapability(GLenumValue cap, bool on) {
   if (!flag) return setError(GL_INVALID_ENUM);
   // _mesa_set_enable: every capability returns early when already so.
   if (!changing(*flag == on)) return;
+  if (cap == GL_COLOR_MATERIAL) copyToCurrent();  // FLUSH_CURRENT, before the flag changes
   *flag = on;
   if (cap == GL_COLOR_MATERIAL && on) applyColorMaterial();
   // Enabling a clip plane takes it into clip space by the projection's

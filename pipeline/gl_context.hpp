@@ -249,6 +249,7 @@ class GLContext {
   // decides which quads share the draw module's clipping decision.
   enum VboSlot : int { kVboPosition, kVboColor, kVboNormal, kVboMaterial, kVboSlots = kVboMaterial + 10 };
   void vboAttribute(int slot, int size);
+  void copyToCurrent();  // vbo_exec_copy_to_current
   void setCurrentColor(const Vec4& c);
   void drawQuadsPiece(std::vector<ClipVertex> piece);      // one GL_QUADS draw piece
   void drawQuadStripPiece(const std::vector<ClipVertex>& piece);
@@ -399,6 +400,8 @@ class GLContext {
   bool colorMaterialEnabled_ = false;
   bool settingTrackedMaterial_ = false;  // applyColorMaterial's own materialfv
   std::array<std::uint8_t, kVboSlots> vboSize_{};  // Mesa's vbo vertex format (vboAttribute)
+  std::array<Material, 2> vboMaterial_;             // the material values the vbo holds (its slots in vboSize_)
+  Vec4 copiedColor_{1, 1, 1, 1};                    // Mesa's ctx->Current colour: the vbo's, as last copied
   bool vboStored_ = false;                          // a glBegin since the last flush (FLUSH_STORED_VERTICES)
   std::size_t vboVertexCount_ = 0;                  // vertices in the vbo's buffer since it was last drawn
   std::vector<std::size_t> blockWraps_;             // where the vbo cut this block (vertex indices)

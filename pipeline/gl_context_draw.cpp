@@ -53,7 +53,10 @@ void GLContext::begin(GLenumValue mode) {
   if (primitive_ != PrimitiveType::Quads) closeQuadDraw();
   // vbo_exec_Begin: attributes set since the last flush but no vertex (all
   // outside glBegin/glEnd) are not kept in the format.
-  if (vboSize_[kVboPosition] == 0) vboSize_.fill(0);
+  if (vboSize_[kVboPosition] == 0) {
+    copyToCurrent();
+    vboSize_.fill(0);
+  }
   inBegin_ = true;
   vboStored_ = true;
   blockWraps_.clear();
@@ -91,6 +94,7 @@ void GLContext::vboAttribute(int slot, int size) {
     // vbo_exec_wrap_upgrade_vertex's heuristic: an attribute first seen
     // outside glBegin/glEnd after more than 8 vertices starts a new format.
     if (first && vboVertexCount_ > 8) {
+      copyToCurrent();
       vboSize_.fill(0);
       current = static_cast<std::uint8_t>(size);
     }
@@ -103,7 +107,10 @@ void GLContext::flushVertices() {
   // vbo's vertex format starts empty (vbo_exec_FlushVertices_internal,
   // vbo_reset_all_attr).
   closeQuadDraw();
-  if (vboStored_) vboSize_.fill(0);
+  if (vboStored_) {
+    copyToCurrent();
+    vboSize_.fill(0);
+  }
   vboStored_ = false;
   vboVertexCount_ = 0;
 }
@@ -147,8 +154,12 @@ ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
   Vec4 front, back;
   if (lightingEnabled_) {
     s.material = blockMaterials_[v.material];
-    if (colorMaterialEnabled_) {
-      // The vertex's own colour feeds the tracked material parameter.
+    if (colorMaterialEnabled_ && vboSize_[kVboColor] != 0) {
+      // The vertex's own colour feeds the tracked material parameter where
+      // the colour varies in the draw (a glColor since the vbo's format was
+      // last reset); otherwise Mesa's fixed-function program reads the
+      // material state, which enabling GL_COLOR_MATERIAL set from the
+      // colour and a held glMaterial may have set back (copyToCurrent).
       const Vec4 c = v.color;
       for (int side = 0; side < 2; ++side) {
         if ((side == 0 && colorMaterialFace_ == GL_BACK) || (side == 1 && colorMaterialFace_ == GL_FRONT))

@@ -142,18 +142,22 @@ void GLContext::materialfv(GLenumValue face, GLenumValue pname, const float* p, 
     // Each material parameter the call sets is a vbo attribute (MAT_ATTR),
     // in vbo_Materialfv's order: emission, ambient, diffuse, specular,
     // shininess.
-    auto set = [&](Vec4& target, int property, GLenumValue parameter) {
+    Material& held = vboMaterial_[static_cast<std::size_t>(side)];
+    auto set = [&](Vec4& target, Vec4 Material::*field, int property, GLenumValue parameter) {
       if (tracked(parameter)) return;
-      if (!settingTrackedMaterial_) vboAttribute(kVboMaterial + side * 5 + property, 4);
+      if (!settingTrackedMaterial_) {
+        vboAttribute(kVboMaterial + side * 5 + property, 4);
+        held.*field = v;
+      }
       target = v;
     };
-    if (pname == GL_EMISSION) set(m.emission, 0, GL_EMISSION);
-    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) set(m.ambient, 1, GL_AMBIENT);
-    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) set(m.diffuse, 2, GL_DIFFUSE);
-    if (pname == GL_SPECULAR) set(m.specular, 3, GL_SPECULAR);
+    if (pname == GL_EMISSION) set(m.emission, &Material::emission, 0, GL_EMISSION);
+    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) set(m.ambient, &Material::ambient, 1, GL_AMBIENT);
+    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) set(m.diffuse, &Material::diffuse, 2, GL_DIFFUSE);
+    if (pname == GL_SPECULAR) set(m.specular, &Material::specular, 3, GL_SPECULAR);
     if (pname == GL_SHININESS) {
       vboAttribute(kVboMaterial + side * 5 + 4, 1);
-      m.shininess = p[0];
+      m.shininess = held.shininess = p[0];
     }
   }
   // Inside glBegin/glEnd the change applies to the vertices that follow
@@ -175,7 +179,33 @@ void GLContext::colorMaterial(GLenumValue face, GLenumValue mode) {
   if (!changing(colorMaterialFace_ == face && colorMaterialMode_ == mode)) return;
   colorMaterialFace_ = face;
   colorMaterialMode_ = mode;
-  if (colorMaterialEnabled_) applyColorMaterial();
+  if (colorMaterialEnabled_) {
+    copyToCurrent();  // FLUSH_CURRENT, then the tracked parameter from the current colour
+    applyColorMaterial();
+  }
+}
+
+void GLContext::copyToCurrent() {
+  // vbo_exec_copy_to_current: each attribute the vbo holds is copied to
+  // GL's current values where it differs from them. A glMaterial outside
+  // glBegin/glEnd is such an attribute: enabling GL_COLOR_MATERIAL sets the
+  // tracked parameter from the colour, and the next copy (a glBegin, a
+  // flush) puts the glMaterial's value back. The tracked parameter follows
+  // the colour again only where the copied colour changed.
+  for (std::size_t side = 0; side < 2; ++side) {
+    Material& m = lighting_.material[side];
+    const Material& held = vboMaterial_[side];
+    const int base = kVboMaterial + static_cast<int>(side) * 5;
+    if (vboSize_[base + 0]) m.emission = held.emission;
+    if (vboSize_[base + 1]) m.ambient = held.ambient;
+    if (vboSize_[base + 2]) m.diffuse = held.diffuse;
+    if (vboSize_[base + 3]) m.specular = held.specular;
+    if (vboSize_[base + 4]) m.shininess = held.shininess;
+  }
+  if (vboSize_[kVboColor] && currentColor_ != copiedColor_) {
+    copiedColor_ = currentColor_;
+    if (colorMaterialEnabled_) applyColorMaterial();
+  }
 }
 
 void GLContext::applyColorMaterial() {
