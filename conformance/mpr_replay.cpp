@@ -7,9 +7,8 @@
 #include "pipeline/gl_script_runner.hpp"  // glErrorReport
 
 namespace mpr {
-namespace {
 
-BufferSet collect(const std::string& point, const Framebuffer& fb) {
+BufferSet collectBuffers(const std::string& point, const Framebuffer& fb) {
   BufferSet b;
   b.point = point;
   b.width = fb.width();
@@ -19,8 +18,6 @@ BufferSet collect(const std::string& point, const Framebuffer& fb) {
   b.stencil = fb.stencilData();
   return b;
 }
-
-}  // namespace
 
 MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures, int threads) {
   GLContext gl(script.width, script.height, profile);
@@ -35,7 +32,7 @@ MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsi
   for (const ScriptCommand& c : script.commands) {
     if (c.kind == ScriptCommand::Kind::Snapshot) {
       gl.prepareRead();
-      out.snapshots.push_back(collect(c.label, gl.framebuffer()));
+      out.snapshots.push_back(collectBuffers(c.label, gl.framebuffer()));
     }
     dispatch(emulator, c);
     if (c.kind != ScriptCommand::Kind::Call) continue;
@@ -45,7 +42,7 @@ MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsi
     if (const std::uint32_t e = gl.getError())
       out.glErrors.push_back(glErrorReport(c, e));
   }
-  out.snapshots.push_back(collect("final", gl.framebuffer()));
+  out.snapshots.push_back(collectBuffers("final", gl.framebuffer()));
   return out;
 }
 

@@ -10,6 +10,8 @@
 
 namespace mpr {
 
+class Framebuffer;
+
 struct MprReplay {
   std::vector<BufferSet> snapshots;
   std::vector<std::string> glErrors;  // "LINE: GL_INVALID_ENUM in glX"
@@ -18,6 +20,9 @@ struct MprReplay {
 // `departures`: MesaDeparture bits to emulate (pipeline/gl_context.hpp), for
 // telling which differences a known departure of Mesa's explains; `threads`:
 // GLContext::setThreads (the buffers are the same at any count).
+// A framebuffer's colour, depth and stencil as a BufferSet named `point`.
+BufferSet collectBuffers(const std::string& point, const Framebuffer& fb);
+
 MprReplay replayOnMpr(const Script& script, const HardwareProfile& profile, unsigned departures = 0, int threads = 1);
 
 }  // namespace mpr

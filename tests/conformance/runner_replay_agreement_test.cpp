@@ -25,26 +25,15 @@
 namespace mpr {
 namespace {
 
-BufferSet buffersOf(const std::string& point, const Framebuffer& fb) {
-  BufferSet b;
-  b.point = point;
-  b.width = fb.width();
-  b.height = fb.height();
-  for (const Rgba8& c : fb.colorData()) b.color.insert(b.color.end(), c.begin(), c.end());
-  b.depth = fb.depthData();
-  b.stencil = fb.stencilData();
-  return b;
-}
-
 std::vector<BufferSet> runThroughExecutor(const Script& script) {
   GLContext gl(script.width, script.height, mesaProfile());
   std::vector<BufferSet> out;
   ScriptHooks hooks;
   hooks.onSnapshot = [&](const ScriptCommand& c, const GLContext& context) {
-    out.push_back(buffersOf(c.label, context.framebuffer()));
+    out.push_back(collectBuffers(c.label, context.framebuffer()));
   };
   runScript(script, gl, hooks);
-  out.push_back(buffersOf("final", gl.framebuffer()));
+  out.push_back(collectBuffers("final", gl.framebuffer()));
   return out;
 }
 
