@@ -507,6 +507,19 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     xWin[i] = xw;
     yWin[i] = yw;
     snapped[i] = snapVertex(xw, yw);
+    if (!windowMap_) {
+      // Coverage from the window position llvmpipe snaps: draw_llvm.c's
+      // viewport, (clip * 1/w) * scale + translate in one fused multiply-add,
+      // on OSMesa's flipped rows (y down from the top); MPR's unfused,
+      // y-up position can differ by an ulp, and on a sliver that moves a
+      // pixel centre across an edge (lighting seed 1113).
+      const float flippedTransY = static_cast<float>(fb_.height()) - vpTransY_;
+      const float xl = std::fma(xn, vpScaleX_, vpTransX_);
+      const float yl = std::fma(yn, -vpScaleY_, flippedTransY);
+      if (!std::isfinite(xl) || !std::isfinite(yl)) return;
+      snapped[i] = {snapToSubpixel(xl),
+                    (static_cast<std::int64_t>(fb_.height()) - 1) * kSubpixelOne - snapToSubpixel(yl)};
+    }
   }
   const std::int64_t area = signedArea2(snapped[0], snapped[1], snapped[2]);
   if (area == 0) return;

@@ -25,6 +25,10 @@ class MatrixStack {
   const Mat4& below() const { return stack_.size() > 1 ? stack_[stack_.size() - 2] : stack_.back(); }
   bool push() {  // false on overflow (GL_STACK_OVERFLOW)
     if (depth() >= maxDepth_) return false;
+    // Measured: the pushed copy is classified as if the top had been
+    // analysed first (a glMultMatrix before a push no longer leaves the copy
+    // general, and a glClipPlane right after the push gets the real inverse).
+    mesaAnalyse(stack_.back(), mesa_.back());
     stack_.push_back(stack_.back());
     mesa_.push_back(mesa_.back());
     changedSincePush_ = false;
