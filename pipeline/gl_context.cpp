@@ -365,29 +365,19 @@ void GLContext::fogf(GLenumValue pname, float param) {
       else if (m == GL_EXP) mode = FogMode::Exp;
       else if (m == GL_EXP2) mode = FogMode::Exp2;
       else return setError(GL_INVALID_ENUM);
-      if (changing(fog_.mode == mode)) fog_.mode = mode;
-      return;
+      return setIfChanged(fog_.mode, mode);
     }
     case GL_FOG_DENSITY:
       if (param < 0.0f) return setError(GL_INVALID_VALUE);
-      if (changing(fog_.density == param)) fog_.density = param;
-      return;
+      return setIfChanged(fog_.density, param);
     case GL_FOG_COLOR:
       if (departures_ & kScalarCallVectorParam) {
-        const Vec4 color(clamp01(param), 0, 0, 0);
-        if (changing(fog_.color == color)) fog_.color = color;
-        return;
+        return setIfChanged(fog_.color, Vec4(clamp01(param), 0, 0, 0));
       }
       break;
-    case GL_FOG_START:
-      if (changing(fog_.start == param)) fog_.start = param;
-      return;
-    case GL_FOG_END:
-      if (changing(fog_.end == param)) fog_.end = param;
-      return;
-    case GL_FOG_INDEX:  // colour-index mode only, but Mesa stores it (and flushes)
-      if (changing(setterValues_.fogIndex == param)) setterValues_.fogIndex = param;
-      return;
+    case GL_FOG_START: return setIfChanged(fog_.start, param);
+    case GL_FOG_END: return setIfChanged(fog_.end, param);
+    case GL_FOG_INDEX: return setIfChanged(setterValues_.fogIndex, param);  // colour-index only; Mesa stores it
   }
   setError(GL_INVALID_ENUM);
 }
@@ -398,9 +388,7 @@ void GLContext::fogfv(GLenumValue pname, const float* p, int count) {
     if (count < 4) return setError(GL_INVALID_VALUE);
     // Compared clamped: a colour that clamps to the stored one flushes
     // nothing (measured against llvmpipe).
-    const Vec4 color(clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), clamp01(p[3]));
-    if (changing(fog_.color == color)) fog_.color = color;
-    return;
+    return setIfChanged(fog_.color, Vec4(clamp01(p[0]), clamp01(p[1]), clamp01(p[2]), clamp01(p[3])));
   }
   if (count < 1) return setError(GL_INVALID_VALUE);
   fogf(pname, p[0]);

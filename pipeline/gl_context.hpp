@@ -249,7 +249,8 @@ class GLContext {
   // decides which quads share the draw module's clipping decision.
   enum VboSlot : int { kVboPosition, kVboColor, kVboNormal, kVboMaterial, kVboSlots = kVboMaterial + 10 };
   void vboAttribute(int slot, int size);
-  void copyToCurrent();  // vbo_exec_copy_to_current
+  void copyToCurrent();        // vbo_exec_copy_to_current
+  void copyAndResetFormat();   // vbo_exec_FlushVertices_internal: copyToCurrent, then vbo_reset_all_attr
   void setCurrentColor(const Vec4& c);
   void drawQuadsPiece(std::vector<ClipVertex> piece);      // one GL_QUADS draw piece
   void drawQuadStripPiece(const std::vector<ClipVertex>& piece);
@@ -267,6 +268,10 @@ class GLContext {
     if (unchanged) return false;
     flushVertices();
     return true;
+  }
+  template <typename T, typename V>
+  void setIfChanged(T& stored, const V& value) {  // Mesa's compare, flush, store
+    if (changing(stored == value)) stored = value;
   }
   void setCapability(GLenumValue cap, bool on);
   MatrixStack& currentStack();

@@ -53,10 +53,7 @@ void GLContext::begin(GLenumValue mode) {
   if (primitive_ != PrimitiveType::Quads) closeQuadDraw();
   // vbo_exec_Begin: attributes set since the last flush but no vertex (all
   // outside glBegin/glEnd) are not kept in the format.
-  if (vboSize_[kVboPosition] == 0) {
-    copyToCurrent();
-    vboSize_.fill(0);
-  }
+  if (vboSize_[kVboPosition] == 0) copyAndResetFormat();
   inBegin_ = true;
   vboStored_ = true;
   blockWraps_.clear();
@@ -94,8 +91,7 @@ void GLContext::vboAttribute(int slot, int size) {
     // vbo_exec_wrap_upgrade_vertex's heuristic: an attribute first seen
     // outside glBegin/glEnd after more than 8 vertices starts a new format.
     if (first && vboVertexCount_ > 8) {
-      copyToCurrent();
-      vboSize_.fill(0);
+      copyAndResetFormat();
       current = static_cast<std::uint8_t>(size);
     }
   }
@@ -107,10 +103,7 @@ void GLContext::flushVertices() {
   // vbo's vertex format starts empty (vbo_exec_FlushVertices_internal,
   // vbo_reset_all_attr).
   closeQuadDraw();
-  if (vboStored_) {
-    copyToCurrent();
-    vboSize_.fill(0);
-  }
+  if (vboStored_) copyAndResetFormat();
   vboStored_ = false;
   vboVertexCount_ = 0;
 }
@@ -506,19 +499,17 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
     invW[i] = static_cast<double>(iw) * mapInvQ[i];
     xWin[i] = xw;
     yWin[i] = yw;
-    snapped[i] = snapVertex(xw, yw);
-    if (!windowMap_) {
-      // Coverage from the window position llvmpipe snaps: draw_llvm.c's
-      // viewport, (clip * 1/w) * scale + translate in one fused multiply-add,
-      // on OSMesa's flipped rows (y down from the top); MPR's unfused,
-      // y-up position can differ by an ulp, and on a sliver that moves a
-      // pixel centre across an edge (lighting seed 1113).
-      const float flippedTransY = static_cast<float>(fb_.height()) - vpTransY_;
-      const float xl = std::fma(xn, vpScaleX_, vpTransX_);
-      const float yl = std::fma(yn, -vpScaleY_, flippedTransY);
-      if (!std::isfinite(xl) || !std::isfinite(yl)) return;
-      snapped[i] = {snapToSubpixel(xl),
-                    (static_cast<std::int64_t>(fb_.height()) - 1) * kSubpixelOne - snapToSubpixel(yl)};
+    if (windowMap_) {
+      snapped[i] = snapVertex(xw, yw);
+    } else {
+      // Coverage from the window position llvmpipe snaps (fused, on OSMesa's
+      // flipped rows): MPR's unfused y-up position can differ by an ulp, and
+      // on a sliver that moves a pixel centre across an edge (lighting seed
+      // 1113).
+      const LlWindow l = llvmpipeWindow(v[i]->clip, depth.window);
+      if (!std::isfinite(l.x) || !std::isfinite(l.y)) return;
+      snapped[i] = {snapToSubpixel(l.x),
+                    (static_cast<std::int64_t>(fb_.height()) - 1) * kSubpixelOne - snapToSubpixel(l.y)};
     }
   }
   const std::int64_t area = signedArea2(snapped[0], snapped[1], snapped[2]);

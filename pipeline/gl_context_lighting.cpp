@@ -9,6 +9,13 @@
 namespace mpr {
 namespace {
 Vec4 vec4From(const float* p) { return Vec4(p[0], p[1], p[2], p[3]); }
+// A material's colour parameters in vbo_Materialfv's attribute order
+// (emission, ambient, diffuse, specular; shininess is the fifth): a
+// parameter's index is its offset among a side's vbo material slots.
+constexpr Vec4 Material::*kMaterialColours[4] = {&Material::emission, &Material::ambient, &Material::diffuse,
+                                                 &Material::specular};
+constexpr int kShininessProperty = 4;
+
 int expectedCount(GLenumValue pname) {
   switch (pname) {
     case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: case GL_EMISSION:
@@ -44,31 +51,28 @@ void GLContext::lightfv(GLenumValue light, GLenumValue pname, const float* p, in
   const Mat4& mv = modelview_.top();
   // _mesa_light compares the value (positions and directions once in eye
   // space) with the stored one and flushes only on a change.
-  auto set = [&](auto& target, const auto& value) {
-    if (changing(target == value)) target = value;
-  };
   switch (pname) {
-    case GL_AMBIENT: return set(l.ambient, vec4From(p));
-    case GL_DIFFUSE: return set(l.diffuse, vec4From(p));
-    case GL_SPECULAR: return set(l.specular, vec4From(p));
-    case GL_POSITION: return set(l.position, mv * vec4From(p));  // eye space at specification
+    case GL_AMBIENT: return setIfChanged(l.ambient, vec4From(p));
+    case GL_DIFFUSE: return setIfChanged(l.diffuse, vec4From(p));
+    case GL_SPECULAR: return setIfChanged(l.specular, vec4From(p));
+    case GL_POSITION: return setIfChanged(l.position, mv * vec4From(p));  // eye space at specification
     case GL_SPOT_DIRECTION:
       analyseMatrices(true, false);  // _mesa_Lightfv analyses the modelview first
-      return set(l.spotDirection, glm::mat3(mv) * Vec3(p[0], p[1], p[2]));
+      return setIfChanged(l.spotDirection, glm::mat3(mv) * Vec3(p[0], p[1], p[2]));
     case GL_SPOT_EXPONENT:
       if (p[0] < 0.0f || p[0] > 128.0f) return setError(GL_INVALID_VALUE);
-      return set(l.spotExponent, p[0]);
+      return setIfChanged(l.spotExponent, p[0]);
     case GL_SPOT_CUTOFF:
       if ((p[0] < 0.0f || p[0] > 90.0f) && p[0] != 180.0f) return setError(GL_INVALID_VALUE);
-      return set(l.spotCutoff, p[0]);
+      return setIfChanged(l.spotCutoff, p[0]);
     case GL_CONSTANT_ATTENUATION:
     case GL_LINEAR_ATTENUATION:
     case GL_QUADRATIC_ATTENUATION:
       if (p[0] < 0.0f) return setError(GL_INVALID_VALUE);
-      return set(pname == GL_CONSTANT_ATTENUATION ? l.constantAttenuation
-                 : pname == GL_LINEAR_ATTENUATION ? l.linearAttenuation
-                                                  : l.quadraticAttenuation,
-                 p[0]);
+      return setIfChanged(pname == GL_CONSTANT_ATTENUATION ? l.constantAttenuation
+                          : pname == GL_LINEAR_ATTENUATION ? l.linearAttenuation
+                                                           : l.quadraticAttenuation,
+                          p[0]);
   }
   setError(GL_INVALID_ENUM);
 }
@@ -89,13 +93,10 @@ void GLContext::lightModelf(GLenumValue pname, float param) {
 void GLContext::lightModelfv(GLenumValue pname, const float* p, int count) {
   if (!checkOutsideBeginEnd()) return;
   if (count < expectedCount(pname)) return setError(GL_INVALID_VALUE);
-  auto set = [&](auto& target, const auto& value) {
-    if (changing(target == value)) target = value;
-  };
   switch (pname) {
-    case GL_LIGHT_MODEL_AMBIENT: return set(lighting_.model.ambient, vec4From(p));
-    case GL_LIGHT_MODEL_LOCAL_VIEWER: return set(lighting_.model.localViewer, p[0] != 0.0f);
-    case GL_LIGHT_MODEL_TWO_SIDE: return set(lighting_.model.twoSide, p[0] != 0.0f);
+    case GL_LIGHT_MODEL_AMBIENT: return setIfChanged(lighting_.model.ambient, vec4From(p));
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: return setIfChanged(lighting_.model.localViewer, p[0] != 0.0f);
+    case GL_LIGHT_MODEL_TWO_SIDE: return setIfChanged(lighting_.model.twoSide, p[0] != 0.0f);
   }
   setError(GL_INVALID_ENUM);
 }
@@ -143,20 +144,21 @@ void GLContext::materialfv(GLenumValue face, GLenumValue pname, const float* p, 
     // in vbo_Materialfv's order: emission, ambient, diffuse, specular,
     // shininess.
     Material& held = vboMaterial_[static_cast<std::size_t>(side)];
-    auto set = [&](Vec4& target, Vec4 Material::*field, int property, GLenumValue parameter) {
+    auto set = [&](int property, GLenumValue parameter) {
       if (tracked(parameter)) return;
+      Vec4 Material::*field = kMaterialColours[property];
       if (!settingTrackedMaterial_) {
         vboAttribute(kVboMaterial + side * 5 + property, 4);
         held.*field = v;
       }
-      target = v;
+      m.*field = v;
     };
-    if (pname == GL_EMISSION) set(m.emission, &Material::emission, 0, GL_EMISSION);
-    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) set(m.ambient, &Material::ambient, 1, GL_AMBIENT);
-    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) set(m.diffuse, &Material::diffuse, 2, GL_DIFFUSE);
-    if (pname == GL_SPECULAR) set(m.specular, &Material::specular, 3, GL_SPECULAR);
+    if (pname == GL_EMISSION) set(0, GL_EMISSION);
+    if (pname == GL_AMBIENT || pname == GL_AMBIENT_AND_DIFFUSE) set(1, GL_AMBIENT);
+    if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) set(2, GL_DIFFUSE);
+    if (pname == GL_SPECULAR) set(3, GL_SPECULAR);
     if (pname == GL_SHININESS) {
-      vboAttribute(kVboMaterial + side * 5 + 4, 1);
+      vboAttribute(kVboMaterial + side * 5 + kShininessProperty, 1);
       m.shininess = held.shininess = p[0];
     }
   }
@@ -195,17 +197,20 @@ void GLContext::copyToCurrent() {
   for (std::size_t side = 0; side < 2; ++side) {
     Material& m = lighting_.material[side];
     const Material& held = vboMaterial_[side];
-    const int base = kVboMaterial + static_cast<int>(side) * 5;
-    if (vboSize_[base + 0]) m.emission = held.emission;
-    if (vboSize_[base + 1]) m.ambient = held.ambient;
-    if (vboSize_[base + 2]) m.diffuse = held.diffuse;
-    if (vboSize_[base + 3]) m.specular = held.specular;
-    if (vboSize_[base + 4]) m.shininess = held.shininess;
+    const std::size_t base = kVboMaterial + side * 5;
+    for (std::size_t property = 0; property < 4; ++property)
+      if (vboSize_[base + property]) m.*kMaterialColours[property] = held.*kMaterialColours[property];
+    if (vboSize_[base + kShininessProperty]) m.shininess = held.shininess;
   }
   if (vboSize_[kVboColor] && currentColor_ != copiedColor_) {
     copiedColor_ = currentColor_;
     if (colorMaterialEnabled_) applyColorMaterial();
   }
+}
+
+void GLContext::copyAndResetFormat() {
+  copyToCurrent();
+  vboSize_.fill(0);
 }
 
 void GLContext::applyColorMaterial() {

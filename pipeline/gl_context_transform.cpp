@@ -39,8 +39,8 @@ void GLContext::multiplyTop(const Mat4& m) {
 }
 
 void GLContext::analyseMatrices(bool modelview, bool projection) {
-  if (modelview) mesaAnalyse(modelview_.top(), modelview_.mesaTop());
-  if (projection) mesaAnalyse(projection_.top(), projection_.mesaTop());
+  if (modelview) modelview_.analyse();
+  if (projection) projection_.analyse();
 }
 
 void GLContext::matrixMode(GLenumValue mode) {

@@ -11,12 +11,10 @@ namespace mpr {
 namespace {
 
 LlWindow toLlWindow(const DrawVertex& v, const WindowTransform& t) {
+  if (v.original) return llvmpipeWindow(v.clip, t);
+  // draw_pipe_clip.c interp(): the same in C, unfused
   const float oow = 1.0f / v.clip.w;
   const float flippedTransY = static_cast<float>(t.fbHeight) - t.transY;
-  if (v.original)  // draw_llvm.c generate_viewport: (clip * 1/w) * scale + translate, one fmuladd
-    return {std::fma(v.clip.x * oow, t.scaleX, t.transX), std::fma(v.clip.y * oow, -t.scaleY, flippedTransY),
-            std::fma(v.clip.z * oow, t.scaleZ, t.transZ)};
-  // draw_pipe_clip.c interp(): the same in C, unfused
   return {v.clip.x * oow * t.scaleX + t.transX, v.clip.y * oow * -t.scaleY + flippedTransY,
           v.clip.z * oow * t.scaleZ + t.transZ};
 }
@@ -92,6 +90,13 @@ std::int64_t snapLikeLlvmpipe(float v) {
 }
 
 }  // namespace
+
+LlWindow llvmpipeWindow(const Vec4& clip, const WindowTransform& t) {
+  const float oow = 1.0f / clip.w;
+  const float flippedTransY = static_cast<float>(t.fbHeight) - t.transY;
+  return {std::fma(clip.x * oow, t.scaleX, t.transX), std::fma(clip.y * oow, -t.scaleY, flippedTransY),
+          std::fma(clip.z * oow, t.scaleZ, t.transZ)};
+}
 
 // The vertex's clip mask as draw_llvm.c generate_clipmask computes it.
 std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes) {

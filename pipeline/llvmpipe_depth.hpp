@@ -32,6 +32,11 @@ struct LlWindow {  // window position in llvmpipe's y-down space
   float x, y, z;
 };
 
+// Where llvmpipe puts a vertex that came out of the vertex shader (draw_llvm.c
+// generate_viewport): (clip * 1/w) * scale + translate, one fused
+// multiply-add, on OSMesa's flipped rows.
+LlWindow llvmpipeWindow(const Vec4& clip, const WindowTransform& t);
+
 // The vertex's clip mask as draw_llvm.c generate_clipmask computes it: bit
 // i set where the vertex lies outside draw's plane i (see llvmpipe_depth.cpp).
 std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes);

@@ -15,8 +15,9 @@ class MatrixStack {
   // Mesa's flags, class and inverse of the top (pushed and popped with it).
   MesaMatrixState& mesaTop() { return mesa_.back(); }
   const MesaMatrixState& mesaTop() const { return mesa_.back(); }
-  const Mat4& analysedInverse() {  // _math_matrix_analyse, then the inverse Mesa keeps
-    mesaAnalyse(stack_.back(), mesa_.back());
+  void analyse() { mesaAnalyse(stack_.back(), mesa_.back()); }  // _math_matrix_analyse of the top
+  const Mat4& analysedInverse() {  // then the inverse Mesa keeps
+    analyse();
     return mesa_.back().inverse;
   }
   int depth() const { return static_cast<int>(stack_.size()); }
@@ -28,7 +29,7 @@ class MatrixStack {
     // Measured: the pushed copy is classified as if the top had been
     // analysed first (a glMultMatrix before a push no longer leaves the copy
     // general, and a glClipPlane right after the push gets the real inverse).
-    mesaAnalyse(stack_.back(), mesa_.back());
+    analyse();
     stack_.push_back(stack_.back());
     mesa_.push_back(mesa_.back());
     changedSincePush_ = false;

@@ -219,10 +219,6 @@ bool invertNoRotation(const Floats& in, Floats& out, unsigned flags, int dims) {
   return true;
 }
 
-}  // namespace
-
-namespace {
-
 Floats floatsOf(const Mat4& matrix) {
   Floats m{};
   for (int c = 0; c < 4; ++c)
@@ -255,15 +251,8 @@ Mat4 matrixOf(const Floats& out) {
 
 }  // namespace
 
-Mat4 mesaInverse(const Mat4& matrix) {
-  const Floats m = floatsOf(matrix);
-  const auto [kind, flags] = analyse(m);
-  Floats out;
-  if (!invertByClass(m, kind, flags, out)) out = identity();  // matrix_invert: MAT_FLAG_SINGULAR, identity
-  return matrixOf(out);
-}
-
 void mesaAnalyse(const Mat4& matrix, MesaMatrixState& state) {
+  if (!(state.flags & kDirty)) return;  // nothing changed since the last analysis
   const Floats m = floatsOf(matrix);
   if (state.flags & kDirtyType) {
     if (state.flags & kDirtyFlags) {
@@ -279,7 +268,7 @@ void mesaAnalyse(const Mat4& matrix, MesaMatrixState& state) {
     if (invertByClass(m, state.type, state.flags & kGeometry, out)) {  // TEST_MAT_FLAGS: geometry bits only
       state.flags &= ~kSingular;
     } else {
-      state.flags |= kSingular;
+      state.flags |= kSingular;  // matrix_invert: MAT_FLAG_SINGULAR, the identity
       out = identity();
     }
     state.inverse = matrixOf(out);
