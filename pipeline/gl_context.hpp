@@ -248,6 +248,10 @@ class GLContext {
   // copied on (vbo_copy_vertices). Each piece is a draw of its own, which
   // decides which quads share the draw module's clipping decision.
   enum VboSlot : int { kVboPosition, kVboColor, kVboNormal, kVboMaterial, kVboSlots = kVboMaterial + 10 };
+  static constexpr int kShininessSlot = 4;  // a side's shininess among its five vbo material slots
+  // Bit 0: the front shininess is in the vbo's vertex format; bit 1: the back's.
+  std::uint8_t shininessVarying() const;
+  bool shininessKeyZero(std::uint8_t varying) const;
   void vboAttribute(int slot, int size);
   void copyToCurrent();        // vbo_exec_copy_to_current
   void copyAndResetFormat();   // vbo_exec_FlushVertices_internal: copyToCurrent, then vbo_reset_all_attr
@@ -409,7 +413,12 @@ class GLContext {
   Vec4 copiedColor_{1, 1, 1, 1};                    // Mesa's ctx->Current colour: the vbo's, as last copied
   bool vboStored_ = false;                          // a glBegin since the last flush (FLUSH_STORED_VERTICES)
   std::size_t vboVertexCount_ = 0;                  // vertices in the vbo's buffer since it was last drawn
-  std::vector<std::size_t> blockWraps_;             // where the vbo cut this block (vertex indices)
+  std::size_t pieceVertexCount_ = 0;                // of them, this block's since the vbo last cut it
+  struct BlockWrap {
+    std::size_t vertex;              // where the vbo cut this block (vertices_ index)
+    std::uint8_t shininessVarying;   // shininessVarying() of the format the piece before is drawn with
+  };
+  std::vector<BlockWrap> blockWraps_;
   GLenumValue colorMaterialFace_, colorMaterialMode_;
   Vec4 currentColor_{1, 1, 1, 1};
   Vec3 currentNormal_{0, 0, 1};
@@ -427,7 +436,6 @@ class GLContext {
   glm::mat3 normalMatrix_;
   std::vector<ClipPlane> clipPlanesClip_;
   std::vector<ClipPlane> userPlanesClip_;  // clipPlanesClip_'s user planes (after the six of the view volume)
-  bool mesaShininessZero_ = false;         // the shininess0_attenuated departure applies to this draw
   std::optional<glm::mat3> windowMap_;
   unsigned departures_ = 0;  // MesaDeparture bits
 };

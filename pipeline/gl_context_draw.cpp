@@ -35,6 +35,19 @@ bool needsColor(const FragmentState& s) {
   return Vec4(clamp01(c.x), clamp01(c.y), clamp01(c.z), clamp01(c.w));
 }
 
+// vbo_copy_vertices: how many of the `count` vertices of a primitive cut by
+// the vbo begin the next piece (for a fan or a polygon the first and the
+// last, for the others the last ones).
+std::size_t carriedVertexCount(PrimitiveType type, std::size_t count) {
+  switch (type) {
+    case PrimitiveType::Triangles: return count % 3;
+    case PrimitiveType::Quads: return count % 4;
+    case PrimitiveType::TriangleFan:
+    case PrimitiveType::Polygon: return std::min<std::size_t>(count, 2);
+    default: return count <= 1 ? count : 2 + count % 2;  // strips
+  }
+}
+
 }  // namespace
 
 void GLContext::begin(GLenumValue mode) {
@@ -57,6 +70,7 @@ void GLContext::begin(GLenumValue mode) {
   inBegin_ = true;
   vboStored_ = true;
   blockWraps_.clear();
+  pieceVertexCount_ = 0;
   vertices_.clear();
   blockMaterials_.assign(1, lighting_.material);
   blockMaterialUsed_ = false;
@@ -66,6 +80,7 @@ void GLContext::vertex4f(float x, float y, float z, float w, int size) {
   if (!inBegin_) return;  // outside glBegin/glEnd GL leaves the result undefined; ignore
   vboAttribute(kVboPosition, size);
   ++vboVertexCount_;
+  ++pieceVertexCount_;
   vertices_.push_back({Vec4(x, y, z, w), currentColor_, currentNormal_,
                        static_cast<std::uint32_t>(blockMaterials_.size() - 1)});
   blockMaterialUsed_ = true;
@@ -81,11 +96,18 @@ void GLContext::vboAttribute(int slot, int size) {
   auto& current = vboSize_[static_cast<std::size_t>(slot)];
   if (size <= current) return;  // the same size or smaller: filled in, no wrap
   const bool first = current == 0;
+  const std::uint8_t shininessBefore = shininessVarying();  // the format the stored vertices are drawn with
   current = static_cast<std::uint8_t>(size);
   if (inBegin_) {
     // vbo_exec_wrap_buffers: what the buffer holds is drawn, this block is
     // cut here (end() draws the pieces).
-    if (!vertices_.empty() || vboVertexCount_ > 0) blockWraps_.push_back(vertices_.size());
+    if (!vertices_.empty() || vboVertexCount_ > 0) blockWraps_.push_back({vertices_.size(), shininessBefore});
+    // The new buffer starts with the vertices carried over (they count
+    // towards the heuristic below: glBegin with one vertex, a wrap, eight
+    // more and an attribute outside glBegin/glEnd is a reset).
+    pieceVertexCount_ = carriedVertexCount(primitive_, pieceVertexCount_);
+    vboVertexCount_ = pieceVertexCount_;
+    return;
   } else if (vboVertexCount_ > 0) {
     closeQuadDraw();
     // vbo_exec_wrap_upgrade_vertex's heuristic: an attribute first seen
@@ -208,16 +230,6 @@ void GLContext::end() {
   for (int i = 0; i < 6; ++i)
     if (clipPlaneEnabled_[i]) clipPlanesClip_.push_back(mesaTransformRowVector(clipPlanesEye_[i], projInverse));
   userPlanesClip_.assign(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
-  // ffvertex_prog.c make_state_key (the shininess0_attenuated departure):
-  // shininess zero on the front, and on the back when two-sided, for the
-  // whole draw.
-  mesaShininessZero_ = false;
-  if (departures_ & kShininess0Attenuated) {
-    mesaShininessZero_ = true;
-    for (const auto& materials : blockMaterials_)
-      mesaShininessZero_ = mesaShininessZero_ && materials[0].shininess == 0.0f &&
-                           (!lighting_.model.twoSide || materials[1].shininess == 0.0f);
-  }
   if (windowMap_) {
     // The end-of-pipeline map: what lands in the viewport is |u| <= q and
     // |v| <= q (so q >= 0), which is linear in clip coordinates (u w is
@@ -232,42 +244,92 @@ void GLContext::end() {
     clipPlanesClip_[5] = q - v;
   }
 
-  std::vector<ClipVertex> processed;
-  processed.reserve(vertices_.size());
-  // The lighting state every vertex of the draw shares, copied once (it is
-  // a kilobyte); each vertex sets its own materials in it.
+  // The vbo cut the block where an attribute joined its vertex format
+  // (vboAttribute): the vertices stored so far are drawn, and the vertices
+  // of the unfinished primitive begin the next piece (vbo_copy_vertices).
+  // Each piece is a draw of its own with the fixed-function program its
+  // vertex format selects, and a vertex carried over is lit again by it.
+  struct Piece {
+    std::size_t end;      // vertices_ index where the piece stops
+    bool shininessZero;   // Mesa's material_shininess_is_zero for its draw
+  };
+  std::vector<Piece> pieces;
+  for (const BlockWrap& w : blockWraps_) pieces.push_back({w.vertex, shininessKeyZero(w.shininessVarying)});
+  pieces.push_back({vertices_.size(), shininessKeyZero(shininessVarying())});
+  blockWraps_.clear();
+  // The lighting state every vertex of a draw shares, copied once (it is a
+  // kilobyte); each vertex sets its own materials in it.
   LightingState vertexLighting;
-  if (lightingEnabled_) {
-    vertexLighting = lighting_;
-    vertexLighting.mesaShininess0Attenuated = mesaShininessZero_;
+  if (lightingEnabled_) vertexLighting = lighting_;
+  auto processPiece = [&](const std::vector<std::size_t>& indices, std::size_t count, bool shininessZero) {
+    vertexLighting.shininessKeyZero = shininessZero;
+    vertexLighting.mesaShininess0Attenuated = shininessZero && (departures_ & kShininess0Attenuated);
+    std::vector<ClipVertex> processed;
+    processed.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) processed.push_back(processVertex(vertices_[indices[i]], vertexLighting));
+    return processed;
+  };
+  const bool quads = primitive_ == PrimitiveType::Quads || primitive_ == PrimitiveType::QuadStrip;
+  const bool oneProgram = std::all_of(pieces.begin(), pieces.end(),
+                                      [&](const Piece& p) { return p.shininessZero == pieces.front().shininessZero; });
+  if (pieces.size() == 1 || (!quads && oneProgram)) {
+    // Cutting a block of triangles, a strip, a fan or a polygon draws the
+    // same triangles in the same order: it is drawn whole.
+    std::vector<std::size_t> all(vertices_.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    std::vector<ClipVertex> processed = processPiece(all, all.size(), pieces.front().shininessZero);
+    if (primitive_ == PrimitiveType::QuadStrip) return drawQuadStripPiece(processed);
+    if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
+    return drawQuadsPiece(std::move(processed));
   }
-  for (const Vertex& v : vertices_) processed.push_back(processVertex(v, vertexLighting));
-  std::vector<std::size_t> wraps;
-  wraps.swap(blockWraps_);
-  if (!wraps.empty() && (primitive_ == PrimitiveType::Quads || primitive_ == PrimitiveType::QuadStrip)) {
-    // The vbo cut the block (vboAttribute): the draw held so far is drawn,
-    // then each piece up to a cut as a draw of its own; the vertices of the
-    // unfinished primitive at a cut begin the next piece (vbo_copy_vertices).
-    closeQuadDraw();
-    std::size_t start = 0;
-    for (const std::size_t w : wraps) {
-      const std::size_t n = w - start;
-      const std::vector<ClipVertex> piece(processed.begin() + static_cast<std::ptrdiff_t>(start),
-                                          processed.begin() + static_cast<std::ptrdiff_t>(w));
-      if (primitive_ == PrimitiveType::Quads) {
-        drawQuadsPiece(piece);
-        closeQuadDraw();
-      } else {
-        drawQuadStripPiece(piece);
-      }
-      const std::size_t copied = primitive_ == PrimitiveType::Quads ? n % 4 : (n <= 1 ? n : 2 + n % 2);
-      start = w - copied;
+  if (quads) closeQuadDraw();  // the quad draw held so far is drawn first
+  std::vector<std::size_t> piece;  // vertices_ indices, the carried ones first
+  std::size_t next = 0;
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    for (; next < pieces[p].end; ++next) piece.push_back(next);
+    const bool last = p + 1 == pieces.size();
+    const std::size_t n = piece.size();
+    // A cut strip draws an even number of triangles so that facing is kept.
+    const std::size_t drawn = !last && primitive_ == PrimitiveType::TriangleStrip ? n - n % 2 : n;
+    std::vector<ClipVertex> processed = processPiece(piece, drawn, pieces[p].shininessZero);
+    if (primitive_ == PrimitiveType::Quads) {
+      drawQuadsPiece(std::move(processed));
+      if (!last) closeQuadDraw();
+    } else if (primitive_ == PrimitiveType::QuadStrip) {
+      drawQuadStripPiece(processed);
+    } else {
+      drawProcessed(primitive_, processed, false);
     }
-    processed.erase(processed.begin(), processed.begin() + static_cast<std::ptrdiff_t>(start));
+    if (last) break;
+    const std::size_t copied = carriedVertexCount(primitive_, n);
+    std::vector<std::size_t> carried;
+    if (primitive_ == PrimitiveType::TriangleFan || primitive_ == PrimitiveType::Polygon) {
+      if (copied >= 1) carried.push_back(piece.front());
+      if (copied >= 2) carried.push_back(piece.back());
+    } else {
+      carried.assign(piece.end() - static_cast<std::ptrdiff_t>(copied), piece.end());
+    }
+    piece.swap(carried);
   }
-  if (primitive_ == PrimitiveType::QuadStrip) return drawQuadStripPiece(processed);
-  if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
-  drawQuadsPiece(std::move(processed));
+}
+
+std::uint8_t GLContext::shininessVarying() const {
+  return static_cast<std::uint8_t>((vboSize_[kVboMaterial + kShininessSlot] != 0 ? 1 : 0) |
+                                   (vboSize_[kVboMaterial + 5 + kShininessSlot] != 0 ? 2 : 0));
+}
+
+bool GLContext::shininessKeyZero(std::uint8_t varying) const {
+  // ffvertex_prog.c make_state_key, check_active_shininess: a shininess is
+  // active when the draw's vertex format carries it (a glMaterial since the
+  // format was last reset) or its state is not zero; the front's, and the
+  // back's too when lighting is two-sided. With none active Mesa's program
+  // takes no specular power at all (emit_degenerate_lit). The state is the
+  // one at glBegin: inside glBegin/glEnd a glMaterial reaches it only at the
+  // next flush.
+  const std::array<Material, 2>& state = blockMaterials_.front();
+  const bool front = (varying & 1) != 0 || state[0].shininess != 0.0f;
+  const bool back = (varying & 2) != 0 || state[1].shininess != 0.0f;
+  return !front && !(lighting_.model.twoSide && back);
 }
 
 bool GLContext::anyOutsideDrawPlanes(const std::vector<ClipVertex>& processed, std::size_t count) const {

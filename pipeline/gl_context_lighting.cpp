@@ -10,11 +10,11 @@ namespace mpr {
 namespace {
 Vec4 vec4From(const float* p) { return Vec4(p[0], p[1], p[2], p[3]); }
 // A material's colour parameters in vbo_Materialfv's attribute order
-// (emission, ambient, diffuse, specular; shininess is the fifth): a
+// (emission, ambient, diffuse, specular; shininess is the fifth,
+// kShininessSlot): a
 // parameter's index is its offset among a side's vbo material slots.
 constexpr Vec4 Material::*kMaterialColours[4] = {&Material::emission, &Material::ambient, &Material::diffuse,
                                                  &Material::specular};
-constexpr int kShininessProperty = 4;
 
 int expectedCount(GLenumValue pname) {
   switch (pname) {
@@ -158,7 +158,7 @@ void GLContext::materialfv(GLenumValue face, GLenumValue pname, const float* p, 
     if (pname == GL_DIFFUSE || pname == GL_AMBIENT_AND_DIFFUSE) set(2, GL_DIFFUSE);
     if (pname == GL_SPECULAR) set(3, GL_SPECULAR);
     if (pname == GL_SHININESS) {
-      vboAttribute(kVboMaterial + side * 5 + kShininessProperty, 1);
+      vboAttribute(kVboMaterial + side * 5 + kShininessSlot, 1);
       m.shininess = held.shininess = p[0];
     }
   }
@@ -200,7 +200,7 @@ void GLContext::copyToCurrent() {
     const std::size_t base = kVboMaterial + side * 5;
     for (std::size_t property = 0; property < 4; ++property)
       if (vboSize_[base + property]) m.*kMaterialColours[property] = held.*kMaterialColours[property];
-    if (vboSize_[base + kShininessProperty]) m.shininess = held.shininess;
+    if (vboSize_[base + kShininessSlot]) m.shininess = held.shininess;
   }
   if (vboSize_[kVboColor] && currentColor_ != copiedColor_) {
     copiedColor_ = currentColor_;

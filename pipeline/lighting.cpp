@@ -40,17 +40,22 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
       const float cosCutoff = static_cast<float>(std::cos(l.spotCutoff * 3.14159265358979323846 / 180.0));
       spot = cosAngle >= cosCutoff ? std::pow(std::max(cosAngle, 0.0f), l.spotExponent) : 0.0f;
     }
+    // A light the spot cone or the attenuation zeroes still adds its terms
+    // times zero, as Mesa's fixed-function program multiplies LIT's result
+    // by the attenuation (ffvertex_prog.c): an overflowed specular power
+    // (an unnormalised normal to a high shininess) times zero is NaN, and
+    // the clamp below makes the colour white (lighting_zero_scale_nan.gls).
     const float scale = attenuation * spot;
-    if (scale == 0.0f) continue;
     Vec3 term = Vec3(m.ambient) * Vec3(l.ambient);
     const float nDotL = dot3(n, toLight);
     if (nDotL > 0.0f) {
       term += nDotL * Vec3(m.diffuse) * Vec3(l.diffuse);
       const Vec3 toEye = s.model.localViewer ? normalized(-v) : Vec3(0.0f, 0.0f, 1.0f);
       const float nDotH = dot3(n, normalized(toLight + toEye));
-      // max(N.H, 0)^shininess; GL leaves 0^0 open and llvmpipe takes it as 1
-      // (shininess 0, the default, with N.H <= 0: full specular).
-      float specular = nDotH > 0.0f ? std::pow(nDotH, m.shininess) : (m.shininess == 0.0f ? 1.0f : 0.0f);
+      // max(N.H, 0)^shininess; GL leaves 0^0 open: llvmpipe takes it as 1
+      // when no shininess is active in the draw (shininessKeyZero), as 0
+      // otherwise.
+      float specular = nDotH > 0.0f ? std::pow(nDotH, m.shininess) : (s.shininessKeyZero ? 1.0f : 0.0f);
       const bool attenuated = l.spotCutoff != 180.0f ||
                               (l.position.w != 0.0f && (l.constantAttenuation != 1.0f || l.linearAttenuation != 0.0f ||
                                                         l.quadraticAttenuation != 0.0f));

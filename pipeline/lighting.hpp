@@ -50,6 +50,12 @@ struct LightingState {
   // calculate_light_attenuation, then LIT) the specular factor is
   // (N.VP)^(N.VP) instead of 1.
   bool mesaShininess0Attenuated = false;
+  // Mesa's material_shininess_is_zero (ffvertex_prog.c) for the draw: no
+  // shininess active, so the program takes no specular power and the
+  // specular factor is 1 wherever N.L > 0. With a shininess active it takes
+  // max(N.H, 0)^shininess, which llvmpipe makes 0 at N.H <= 0 even for a
+  // shininess of 0 (GL leaves 0^0 open): shininess_zero_power.gls.
+  bool shininessKeyZero = true;
 };
 
 // The lit colour of a vertex at eye position `eye` with unit or non-unit eye
