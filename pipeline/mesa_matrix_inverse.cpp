@@ -228,10 +228,12 @@ Floats floatsOf(const Mat4& matrix) {
 
 // matrix_invert: the routine of the class (inv_mat_tab: the perspective
 // class by the general routine, 2D by the 3D one); false where singular.
+// `out` holds the inverse computed before, and the 3D routines write only
+// the upper 3x4: its bottom row stays whatever an earlier inversion of this
+// matrix (a perspective one, say) left there (matrix_inverse_stale_row.gls).
 bool invertByClass(const Floats& m, MatrixClass kind, unsigned flags, Floats& out) {
-  out = identity();
   switch (kind) {
-    case MatrixClass::Identity: return true;
+    case MatrixClass::Identity: out = identity(); return true;
     case MatrixClass::General:
     case MatrixClass::Perspective: return invertGeneral(m, out);
     case MatrixClass::TwoD:
@@ -264,7 +266,7 @@ void mesaAnalyse(const Mat4& matrix, MesaMatrixState& state) {
     }
   }
   if (state.flags & kDirtyInverse) {
-    Floats out;
+    Floats out = floatsOf(state.inverse);  // mat->inv, written over in part
     if (invertByClass(m, state.type, state.flags & kGeometry, out)) {  // TEST_MAT_FLAGS: geometry bits only
       state.flags &= ~kSingular;
     } else {
