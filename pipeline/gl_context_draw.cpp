@@ -261,12 +261,15 @@ void GLContext::end() {
   // kilobyte); each vertex sets its own materials in it.
   LightingState vertexLighting;
   if (lightingEnabled_) vertexLighting = lighting_;
-  auto processPiece = [&](const std::vector<std::size_t>& indices, std::size_t count, bool shininessZero) {
+  // The first `count` of `indices` (vertices_ indices; all of vertices_
+  // when null), lit by the program a piece's draw selects.
+  auto processPiece = [&](const std::size_t* indices, std::size_t count, bool shininessZero) {
     vertexLighting.shininessKeyZero = shininessZero;
     vertexLighting.mesaShininess0Attenuated = shininessZero && (departures_ & kShininess0Attenuated);
     std::vector<ClipVertex> processed;
     processed.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) processed.push_back(processVertex(vertices_[indices[i]], vertexLighting));
+    for (std::size_t i = 0; i < count; ++i)
+      processed.push_back(processVertex(vertices_[indices ? indices[i] : i], vertexLighting));
     return processed;
   };
   const bool quads = primitive_ == PrimitiveType::Quads || primitive_ == PrimitiveType::QuadStrip;
@@ -275,9 +278,7 @@ void GLContext::end() {
   if (pieces.size() == 1 || (!quads && oneProgram)) {
     // Cutting a block of triangles, a strip, a fan or a polygon draws the
     // same triangles in the same order: it is drawn whole.
-    std::vector<std::size_t> all(vertices_.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    std::vector<ClipVertex> processed = processPiece(all, all.size(), pieces.front().shininessZero);
+    std::vector<ClipVertex> processed = processPiece(nullptr, vertices_.size(), pieces.front().shininessZero);
     if (primitive_ == PrimitiveType::QuadStrip) return drawQuadStripPiece(processed);
     if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
     return drawQuadsPiece(std::move(processed));
@@ -291,7 +292,7 @@ void GLContext::end() {
     const std::size_t n = piece.size();
     // A cut strip draws an even number of triangles so that facing is kept.
     const std::size_t drawn = !last && primitive_ == PrimitiveType::TriangleStrip ? n - n % 2 : n;
-    std::vector<ClipVertex> processed = processPiece(piece, drawn, pieces[p].shininessZero);
+    std::vector<ClipVertex> processed = processPiece(piece.data(), drawn, pieces[p].shininessZero);
     if (primitive_ == PrimitiveType::Quads) {
       drawQuadsPiece(std::move(processed));
       if (!last) closeQuadDraw();
