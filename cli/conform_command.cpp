@@ -31,6 +31,7 @@ struct ConformOptions {
   std::string family = "default";  // the random scripts' family
   bool quiet = false;           // only the summary table
   bool strict = false;          // known Mesa departures fail too
+  bool exact = false;           // every buffer identical, no tolerance
   bool print = false;           // print the random scripts, run nothing
   double minWithin = 100.0;     // exit 0 when at least this percentage of scripts is within bounds
   int threads = 1;              // MPR's (--threads)
@@ -106,6 +107,7 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
   const MprReplay ours = replayOnMpr(script, mesaProfile(), 0, o.threads);
   ConformanceBounds bounds = boundsFor(script);
   bounds.strict = o.strict;
+  bounds.exact = o.exact;
   // Where MPR and Mesa disagree, replay MPR with each known departure of
   // Mesa's emulated: a pixel (or a GL error list) that then agrees differs
   // because of that departure.
@@ -133,9 +135,12 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
       }
   std::ostringstream out;
   out << script.file << " on " << mesa.renderer << "\n"
-            << "bounds: stencil " << (bounds.exactCoordinates ? "identical (exact coordinates)" : "identical on 99.9%")
-            << ", depth within " << bounds.depthBound() << ", colour within " << bounds.colorBound()
-            << (bounds.litOrFogged ? " (lighting or fog)" : "") << "\n";
+            << (bounds.exact ? std::string("bounds: every buffer identical (--exact)")
+                             : std::string("bounds: stencil ") +
+                                   (bounds.exactCoordinates ? "identical (exact coordinates)" : "identical on 99.9%") +
+                                   ", depth within " + std::to_string(bounds.depthBound()) + ", colour within " +
+                                   std::to_string(bounds.colorBound()) + (bounds.litOrFogged ? " (lighting or fog)" : ""))
+            << "\n";
   out << std::left << std::setw(16) << "point" << std::setw(9) << "buffer" << std::setw(26) << "identical"
             << std::setw(10) << "max diff" << "verdict\n";
   bool all = true;
@@ -287,6 +292,8 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   c->add_flag("--print", opts->print, "print the --random scripts instead of running them");
   c->add_flag("-q,--quiet", opts->quiet, "print only scripts out of bounds and the table");
   c->add_flag("--strict", opts->strict, "known Mesa departures from GL 1.1 fail a script too");
+  c->add_flag("--exact", opts->exact,
+              "hold every buffer to identical bytes on every pixel instead of the README's bounds");
   c->add_option("--driver", opts->driver, "Mesa driver: llvmpipe (default) or softpipe");
   addThreadsOption(*c, opts->threads);
   c->add_option("--report", opts->reportDir,

@@ -56,9 +56,10 @@ struct ConformanceBounds {
   bool exactCoordinates;  // dyadic coordinates under an orthographic projection
   bool litOrFogged;       // lighting or fog is enabled somewhere
   bool strict = false;    // known Mesa departures fail the script too
-  int colorBound() const { return litOrFogged ? 2 : 1; }
-  int depthBound() const { return 1; }
-  double stencilFraction() const { return exactCoordinates ? 1.0 : 0.999; }
+  bool exact = false;     // --exact: every buffer identical on every pixel (departures still excused unless strict)
+  int colorBound() const { return exact ? 0 : litOrFogged ? 2 : 1; }
+  int depthBound() const { return exact ? 0 : 1; }
+  double stencilFraction() const { return exact || exactCoordinates ? 1.0 : 0.999; }
 };
 
 ConformanceBounds boundsFor(const Script& script);

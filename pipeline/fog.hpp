@@ -18,9 +18,10 @@ struct FogState {
   bool perFragment = true;  // GL_FOG_HINT: GL_NICEST / GL_DONT_CARE per fragment, GL_FASTEST per vertex
 };
 
-// f(c): LINEAR (end - c) / (end - start), EXP e^(-density c), EXP2
-// e^(-(density c)^2), clamped to [0, 1]. LINEAR with end == start gives 1
-// for c < end and 0 otherwise (the limit, instead of a division by zero).
+// f(c): LINEAR (end - c) / (end - start) (as Mesa evaluates it, see
+// fog.cpp), EXP e^(-density c), EXP2 e^(-(density c)^2), clamped to
+// [0, 1]. LINEAR with end == start, which GL leaves open, is Mesa's
+// c - end.
 float fogFactor(const FogState& fog, float c);
 
 // C' = f C + (1 - f) C_fog on RGB; alpha is unchanged.

@@ -298,8 +298,8 @@ class GLContext {
   void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                 const LlvmpipeDepth& depth);
   // A triangle Mesa's draw module clips: llvmpipe's fan of it, each pixel its
-  // fixed-point edges cover, coloured by the whole triangle's weights.
-  void rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
+  // fixed-point edges cover, its depth and colour from that fan triangle.
+  void rasterizeLlvmpipeFan(const LlvmpipeDepth& depth);
   struct FragmentTally {  // a band's counts, summed into counters_ after the triangle
     std::uint64_t tested = 0, written = 0;
   };

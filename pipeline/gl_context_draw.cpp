@@ -422,7 +422,7 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
     depth.triangles.clear();
     // The end-of-pipeline stage interpolates depth itself (only the window
     // transform is used): no llvmpipe planes to set up.
-    if (!windowMap_) depth.add(tri[0].clip, tri[1].clip, tri[2].clip);
+    if (!windowMap_) depth.add(tri[0], tri[1], tri[2]);
     drawTriangle(tri, depth);
   }
   drawDeferred();
@@ -441,7 +441,7 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const Llvmpip
   // draw makes of it, so that fan decides the coverage (and its planes the
   // depth); MPR's own clipper would cover slightly other pixels along the
   // edges clipping makes (issue 17 class 4, large_coordinates_clip.gls).
-  if (!windowMap_ && depth.clipped) return rasterizeLlvmpipeFan(tri, depth);
+  if (!windowMap_ && depth.clipped) return rasterizeLlvmpipeFan(depth);
   // Inside every plane, clipPolygon would return the triangle as it is.
   if (insideAllPlanes(tri, clipPlanesClip_)) {
     for (const ClipVertex& v : tri)
@@ -586,7 +586,7 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   // Where llvmpipe's clipping dropped what MPR's kept, MPR's own triangle
   // stands in (it is then at most a few pixels of an edge).
   LlvmpipeDepth fallback{depth.window, depth.userPlanes, {}};
-  if (depth.triangles.empty() && !windowMap_) fallback.add(a.clip, b.clip, c.clip);
+  if (depth.triangles.empty() && !windowMap_) fallback.add(a, b, c);
   const LlvmpipeDepth& depthPlanes = depth.triangles.empty() ? fallback : depth;
   // Coverage is decided on the snapped vertices; colours are interpolated on
   // the unsnapped window positions, as llvmpipe sets up its planes (depth
@@ -625,7 +625,13 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   for (int i = 0; i < 3; ++i) t.invW[i] = invW[i];
   vertexChannels(a, b, c, colorOffset, t.attr, t.constant);
   if (fog_.enabled) t.fog = &fog_;
-  decideFlatColor(t);
+  // llvmpipe draws the triangle as one: its colours are that triangle's
+  // planes (also where MPR's own clipper made pieces of it).
+  t.llvmpipeColor = t.color && !windowMap_ && depthPlanes.triangles.size() == 1;
+  if (t.llvmpipeColor)
+    setUpChannelPlanes(depthPlanes.triangles[0], colorOffset, flatShading_, t.fog != nullptr, t.channels);
+  else
+    decideFlatColor(t);
 
   // The triangle's rows within the region.
   ClippedTriangleRows job{snapped, bounds, t, 0, 0, 0, 0};
@@ -671,42 +677,17 @@ namespace {
 std::int64_t floorDivide(std::int64_t a, std::int64_t b) { return a / b - (a % b != 0 && a < 0 ? 1 : 0); }
 }  // namespace
 
-void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth) {
+void GLContext::rasterizeLlvmpipeFan(const LlvmpipeDepth& depth) {
   if (depth.triangles.empty()) return;  // llvmpipe draws nothing of it
   ++counters_.trianglesDrawn;
   const PixelRect region = drawRegion();
   if (region.empty()) return;
-  // Perspective-correct weights of the whole triangle at a window position
-  // (homogeneous rasterisation): with M's columns the vertices' clip (x, y,
-  // w), the point's clip-space barycentrics are proportional to
-  // adj(M) (xn, yn, 1); attributes are linear in clip space on the triangle,
-  // so this is what interpolating the clipped pieces gives, without the
-  // pieces (and for vertices behind the eye too).
-  double m[3][3];
-  for (int i = 0; i < 3; ++i) {
-    m[0][i] = tri[static_cast<std::size_t>(i)].clip.x;
-    m[1][i] = tri[static_cast<std::size_t>(i)].clip.y;
-    m[2][i] = tri[static_cast<std::size_t>(i)].clip.w;
-  }
-  double adj[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      // adj[r][c] = cofactor(c, r)
-      const int r0 = (c + 1) % 3, r1 = (c + 2) % 3, c0 = (r + 1) % 3, c1 = (r + 2) % 3;
-      adj[r][c] = m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
-    }
   const int fbHeight = fb_.height();
   FanShading shading;
   shading.depthMax = static_cast<float>(fb_.profile().depthMax());
   shading.fbHeight = fbHeight;
   shading.depth = frag_.depth.enabled;
   shading.color = needsColor(frag_);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) shading.adj[r][c] = adj[r][c];
-  shading.vpScaleX = vpScaleX_;
-  shading.vpTransX = vpTransX_;
-  shading.vpScaleY = vpScaleY_;
-  shading.vpTransY = vpTransY_;
   if (fog_.enabled) shading.fog = &fog_;
   // The region in llvmpipe's y-down rows.
   const int rowLo = fbHeight - region.y1, rowHi = fbHeight - 1 - region.y0;
@@ -718,7 +699,7 @@ void GLContext::rasterizeLlvmpipeFan(const std::array<ClipVertex, 3>& tri, const
     fan.a0 = t.a0;
     fan.dzdx = t.dzdx;
     fan.dzdy = t.dzdy;
-    vertexChannels(tri[0], tri[1], tri[2], colorOffset, fan.attr, fan.constant);
+    if (fan.color) setUpChannelPlanes(t, colorOffset, flatShading_, fan.fog != nullptr, fan.planes);
     // Bounds of the pixels whose centres the fixed-point edges can cover
     // (positions are (v - 0.5) * 256: pixel x's centre is at x * 256).
     const std::int64_t minX = std::min({t.fixedX[0], t.fixedX[1], t.fixedX[2]}),
@@ -745,7 +726,6 @@ void GLContext::drawRows(const FanTriangleRows& job, FragmentTally& tally, int s
   const LlvmpipeDepth::Triangle& t = job.triangle;
   const int fbHeight = fb_.height();
   FragmentSpan fragments;  // per share: shares run at once
-  std::uint8_t kept[FragmentSpan::kCapacity];
   // The share's rows are GL rows y = fbHeight - 1 - yDown with y mod stride
   // == phase (the same rows a clipped triangle's share holds).
   const std::int64_t wanted = ((fbHeight - 1 - phase) % stride + stride) % stride;  // yDown mod stride
@@ -769,30 +749,8 @@ void GLContext::drawRows(const FanTriangleRows& job, FragmentTally& tally, int s
       fragments.x = static_cast<int>(from);
       fragments.y = y;
       fragments.count = static_cast<int>(std::min<std::int64_t>(FragmentSpan::kCapacity, spanHi - from + 1));
-      if (shadeFanSpan(job.shading, fragments, kept)) {
-        submitSpan(fragments, pipeline, tally);
-        continue;
-      }
-      // Pixels where the plane is seen edge-on make no fragment: the
-      // runs between them go on as spans of their own, in x order.
-      const FragmentSpan whole = fragments;
-      for (int k = 0; k < whole.count;) {
-        if (!kept[k]) {
-          ++k;
-          continue;
-        }
-        int end = k;
-        while (end < whole.count && kept[end]) ++end;
-        fragments.x = whole.x + k;
-        fragments.count = end - k;
-        for (int i = k; i < end; ++i) {
-          fragments.depth[static_cast<std::size_t>(i - k)] = whole.depth[static_cast<std::size_t>(i)];
-          fragments.color[static_cast<std::size_t>(i - k)] = whole.color[static_cast<std::size_t>(i)];
-          fragments.alpha[static_cast<std::size_t>(i - k)] = whole.alpha[static_cast<std::size_t>(i)];
-        }
-        submitSpan(fragments, pipeline, tally);
-        k = end;
-      }
+      shadeFanSpan(job.shading, fragments);
+      submitSpan(fragments, pipeline, tally);
     }
   }
 }

@@ -40,10 +40,14 @@ std::vector<DrawVertex> clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::
                                      const std::vector<ClipPlane>& userPlanes) {
   std::vector<DrawVertex> in(tri.begin(), tri.end()), out;
   auto dot4 = [](const Vec4& a, const Vec4& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; };
+  // interp(): position and every varying (all perspective-interpolated, the
+  // colours' mode when not flat) out + t (in - out).
   auto lerp = [](float t, const DrawVertex& o, const DrawVertex& i) {
-    return DrawVertex{Vec4(o.clip.x + t * (i.clip.x - o.clip.x), o.clip.y + t * (i.clip.y - o.clip.y),
-                           o.clip.z + t * (i.clip.z - o.clip.z), o.clip.w + t * (i.clip.w - o.clip.w)),
-                      false};
+    DrawVertex d{Vec4(o.clip.x + t * (i.clip.x - o.clip.x), o.clip.y + t * (i.clip.y - o.clip.y),
+                      o.clip.z + t * (i.clip.z - o.clip.z), o.clip.w + t * (i.clip.w - o.clip.w)),
+                 false, {}};
+    for (int k = 0; k < kVaryings; ++k) d.attr[k] = o.attr[k] + t * (i.attr[k] - o.attr[k]);
+    return d;
   };
   while (mask != 0 && in.size() >= 3) {
     const int planeIndex = std::countr_zero(mask);
@@ -115,12 +119,12 @@ std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlan
   return m;
 }
 
-void LlvmpipeDepth::add(const Vec4& a, const Vec4& b, const Vec4& c) {
-  const std::array<DrawVertex, 3> tri = {DrawVertex{a, true}, {b, true}, {c, true}};
+void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
+  const std::array<DrawVertex, 3> tri = {DrawVertex{a.clip, true, a.attr}, {b.clip, true, b.attr}, {c.clip, true, c.attr}};
   // draw_pipe_clip.c clip_tri: inside every plane passes as it is; outside
   // one plane with all three vertices is dropped; else clipped and fanned.
-  const std::uint32_t ma = drawClipMask(a, *userPlanes), mb = drawClipMask(b, *userPlanes),
-                      mc = drawClipMask(c, *userPlanes);
+  const std::uint32_t ma = drawClipMask(a.clip, *userPlanes), mb = drawClipMask(b.clip, *userPlanes),
+                      mc = drawClipMask(c.clip, *userPlanes);
   clipped = (ma | mb | mc) != 0;
   if (!clipped) return setUp(tri[0], tri[1], tri[2]);
   if ((ma & mb & mc) != 0) return;
@@ -140,19 +144,33 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
   if (area == 0) return;  // llvmpipe draws nothing
   // y-down positions: a positive area here is counter-clockwise in GL's y-up window.
   const bool ccwUp = area > 0;
-  if (area < 0) std::swap(p0, p1);
+  const DrawVertex* source[3] = {&d0, &d1, &d2};
+  if (area < 0) {
+    std::swap(p0, p1);
+    std::swap(source[0], source[1]);
+  }
+  // init_args: ooa = 1 / (dx01 dy20 - dy01 dx20), the deltas times it.
   const float dx01 = p0.x - p1.x, dy01 = p0.y - p1.y;
   const float dx20 = p2.x - p0.x, dy20 = p2.y - p0.y;
   const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
-  const float dx20ooa = dx20 * ooa, dy20ooa = dy20 * ooa;
-  const float dx01ooa = dx01 * ooa, dy01ooa = dy01 * ooa;
-  const float dz01 = p0.z - p1.z, dz20 = p2.z - p0.z;
   Triangle t;
+  t.dx20ooa = dx20 * ooa;
+  t.dy20ooa = dy20 * ooa;
+  t.dx01ooa = dx01 * ooa;
+  t.dy01ooa = dy01 * ooa;
+  t.x0Center = p0.x - 0.5f;
+  t.y0Center = p0.y - 0.5f;
   t.ccwUp = ccwUp;
-  t.dzdx = dz01 * dy20ooa - dz20 * dy01ooa;
-  t.dzdy = dz20 * dx01ooa - dz01 * dx20ooa;
-  t.a0 = p0.z - (t.dzdx * (p0.x - 0.5f) + t.dzdy * (p0.y - 0.5f));
+  const PlaneCoefficients z = t.plane(p0.z, p1.z, p2.z);
+  t.a0 = z.a0;
+  t.dzdx = z.dadx;
+  t.dzdy = z.dady;
   t.v = {p0, p1, p2};
+  for (int i = 0; i < 3; ++i) {
+    // generate_viewport (and the clipper's interp) keep 1 / w in the position's w.
+    t.oow[i] = 1.0f / source[i]->clip.w;
+    t.attr[i] = source[i]->attr;
+  }
   for (int i = 0; i < 3; ++i) {
     const LlWindow& a = t.v[i];
     t.fixedX[i] = snapLikeLlvmpipe(a.x);
@@ -172,6 +190,15 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
     if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) t.c[i] = wrappingAdd(t.c[i], 1);
   }
   triangles.push_back(t);
+}
+
+PlaneCoefficients LlvmpipeDepth::Triangle::plane(float v0, float v1, float v2) const {
+  const float da01 = v0 - v1, da20 = v2 - v0;
+  PlaneCoefficients p;
+  p.dadx = da01 * dy20ooa - da20 * dy01ooa;
+  p.dady = da20 * dx01ooa - da01 * dx20ooa;
+  p.a0 = v0 - (p.dadx * x0Center + p.dady * y0Center);
+  return p;
 }
 
 bool LlvmpipeDepth::Triangle::covers(int x, int yDown) const {

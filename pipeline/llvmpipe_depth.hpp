@@ -22,10 +22,23 @@ struct WindowTransform {
 };
 
 // A clip-space vertex as Mesa's draw module carries it: `original` for one
-// that came out of the vertex shader, false for one the clipper made.
+// that came out of the vertex shader, false for one the clipper made; its
+// varyings (front and back colour, fog coordinate) beside it.
 struct DrawVertex {
   Vec4 clip;
   bool original;
+  std::array<float, kVaryings> attr;
+};
+
+// One attribute's plane as llvmpipe sets it up (lp_state_setup.c
+// calc_coef4, single precision, unfused): relative to the window origin,
+// a0 being the value at pixel (0, 0)'s centre.
+struct PlaneCoefficients {
+  float a0 = 0.0f, dadx = 0.0f, dady = 0.0f;
+  // lp_bld_interp.c attribs_update_simple: a0 + x dadx + y dady as two fused
+  // lp_build_fmuladd (this CPU has FMA), x and y the integer pixel corner in
+  // llvmpipe's y-down space.
+  float at(float x, float yDown) const { return std::fma(dady, yDown, std::fma(dadx, x, a0)); }
 };
 
 struct LlWindow {  // window position in llvmpipe's y-down space
@@ -67,6 +80,14 @@ struct LlvmpipeDepth {
   struct Triangle {
     float a0, dzdx, dzdy;
     std::array<LlWindow, 3> v;  // in the order set up, counter-clockwise in y-down space
+    // init_args' terms every attribute's plane shares, and the vertices' 1/w
+    // (the position's w as the draw module leaves it) and varyings, in the
+    // order set up.
+    float dy20ooa, dy01ooa, dx20ooa, dx01ooa, x0Center, y0Center;
+    std::array<float, 3> oow;
+    std::array<std::array<float, kVaryings>, 3> attr;
+    // calc_coef4 of the values v0, v1, v2 at the vertices in set-up order.
+    PlaneCoefficients plane(float v0, float v1, float v2) const;
     // lp_setup_tri.c calc_fixed_position: (v - 0.5) in 1/256 pixel, and the
     // edges' half-plane constants of do_triangle_ccw (fill rule included).
     std::array<std::int64_t, 3> fixedX, fixedY, c;
@@ -84,14 +105,14 @@ struct LlvmpipeDepth {
 
   // Adds the triangles draw and llvmpipe make of (a, b, c), given in the
   // order llvmpipe receives it.
-  void add(const Vec4& a, const Vec4& b, const Vec4& c);
+  void add(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c);
 
   float at(int x, int yDown) const { return planeAt(triangles.size() == 1 ? triangles[0] : containing(x, yDown), x, yDown); }
   static float planeAt(const Triangle& t, int x, int yDown) {
     return planeAt(t.a0, t.dzdx, t.dzdy, static_cast<float>(x), static_cast<float>(yDown));
   }
   static float planeAt(float a0, float dzdx, float dzdy, float x, float yDown) {
-    return std::fma(dzdy, yDown, std::fma(dzdx, x, a0));
+    return PlaneCoefficients{a0, dzdx, dzdy}.at(x, yDown);
   }
 
  private:

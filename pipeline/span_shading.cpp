@@ -103,7 +103,64 @@ constexpr int kN = FragmentSpan::kCapacity;
   return holds != 0;
 }
 
+// The channels of out.count pixels from (out.x, out.y) as llvmpipe's
+// fragment shader interpolates them (ChannelPlanes), then finished.
+[[gnu::always_inline]] inline void llvmpipeColor(const ChannelPlanes& p, int fbHeight, const FogState* fog,
+                                                 FragmentSpan& out) {
+  const int n = out.count;
+  const int channels = fog ? 5 : 4;
+  alignas(64) float channel[5][kN];
+  if (p.allUniform) {
+    for (int i = 0; i < channels; ++i)
+      for (int k = 0; k < n; ++k) channel[i][k] = p.uniformValue[i];
+    return finishColor(fog, channel, n, out);
+  }
+  const float yDown = static_cast<float>(fbHeight - 1 - out.y);
+  alignas(64) float x[kN], oow[kN];
+  for (int k = 0; k < n; ++k) x[k] = static_cast<float>(out.x + k);
+  // lp_build_rcp: a division, not RCPPS.
+  for (int k = 0; k < n; ++k) oow[k] = 1.0f / p.oow.at(x[k], yDown);
+  for (int i = 0; i < channels; ++i) {
+    if (p.uniform[i]) {
+      for (int k = 0; k < n; ++k) channel[i][k] = p.uniformValue[i];
+      continue;
+    }
+    const PlaneCoefficients c = p.channel[i];
+    for (int k = 0; k < n; ++k) channel[i][k] = c.at(x[k], yDown) * oow[k];
+  }
+  finishColor(fog, channel, n, out);
+}
+
 }  // namespace
+
+void setUpChannelPlanes(const LlvmpipeDepth::Triangle& t, int colorOffset, bool flat, bool fog, ChannelPlanes& out) {
+  out.oow = t.plane(t.oow[0], t.oow[1], t.oow[2]);
+  const bool oowUniform = out.oow.dadx == 0.0f && out.oow.dady == 0.0f;
+  const int channels = fog ? 5 : 4;
+  out.allUniform = true;
+  for (int i = 0; i < 5; ++i) {
+    const int source = i < 4 ? colorOffset + i : 8;
+    if (i < 4 && flat) {
+      // LP_INTERP_CONSTANT: the provoking vertex's value (GLContext has
+      // given it to all three).
+      out.channel[static_cast<std::size_t>(i)] = {t.attr[2][static_cast<std::size_t>(source)], 0.0f, 0.0f};
+      out.uniform[static_cast<std::size_t>(i)] = true;
+      out.uniformValue[static_cast<std::size_t>(i)] = t.attr[2][static_cast<std::size_t>(source)];
+      continue;
+    }
+    // apply_perspective_corr: the values times 1 / w, then calc_coef4.
+    const PlaneCoefficients c = t.plane(t.attr[0][static_cast<std::size_t>(source)] * t.oow[0],
+                                        t.attr[1][static_cast<std::size_t>(source)] * t.oow[1],
+                                        t.attr[2][static_cast<std::size_t>(source)] * t.oow[2]);
+    out.channel[static_cast<std::size_t>(i)] = c;
+    // Without gradients, fma(0, x, a0) is a0 (but for zero's sign, which
+    // nothing downstream tells apart) at every pixel.
+    const bool uniform = oowUniform && c.dadx == 0.0f && c.dady == 0.0f;
+    out.uniform[static_cast<std::size_t>(i)] = uniform;
+    out.uniformValue[static_cast<std::size_t>(i)] = uniform ? c.a0 * (1.0f / out.oow.a0) : 0.0f;
+    if (i < channels) out.allUniform = out.allUniform && uniform;
+  }
+}
 
 MPR_CPU_CLONES
 void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, const std::array<std::int64_t, 3>& stepX,
@@ -155,6 +212,7 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   }
   storeDepths(z, t.depthMax, out);
   if (!t.color) return noColor(out);
+  if (t.llvmpipeColor) return llvmpipeColor(t.channels, t.fbHeight, t.fog, out);
   // Perspective-correct: interpolate attr/w and 1/w.
   alignas(64) float channel[5][kN];
   const int channels = t.fog ? 5 : 4;
@@ -193,7 +251,7 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
 }
 
 MPR_CPU_CLONES
-bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
+void shadeFanSpan(const FanShading& t, FragmentSpan& out) {
   const int n = out.count;
   alignas(64) float z[kN];
   if (t.depth) {
@@ -203,43 +261,8 @@ bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept) {
     for (int k = 0; k < n; ++k) z[k] = 0.0f;
   }
   storeDepths(z, t.depthMax, out);
-  if (!t.color) {
-    noColor(out);
-    return true;
-  }
-  // The weights at the pixel centre in normalised device coordinates.
-  const double yn = (static_cast<double>(out.y) + 0.5 - t.vpTransY) / t.vpScaleY;
-  alignas(64) double b0[kN], b1[kN], b2[kN], sum[kN];
-  const double row0 = t.adj[0][1] * yn, row1 = t.adj[1][1] * yn, row2 = t.adj[2][1] * yn;
-  std::uint32_t all = 1, allWellConditioned = 1;
-  for (int k = 0; k < n; ++k) {
-    const double xn = (static_cast<double>(out.x + k) + 0.5 - t.vpTransX) / t.vpScaleX;
-    b0[k] = t.adj[0][0] * xn + row0 + t.adj[0][2];
-    b1[k] = t.adj[1][0] * xn + row1 + t.adj[1][2];
-    b2[k] = t.adj[2][0] * xn + row2 + t.adj[2][2];
-    double s = 0.0;  // summed as the per-pixel loop sums, from 0
-    s += b0[k];
-    s += b1[k];
-    s += b2[k];
-    sum[k] = s;
-    const std::uint32_t keep = std::fabs(s) > 0.0;
-    kept[k] = static_cast<std::uint8_t>(keep);
-    all &= keep;
-    // As in shadeSpan (the sum's sign does not matter to the bound).
-    allWellConditioned &= wellConditioned(b0[k], b1[k], b2[k], std::fabs(s));
-  }
-  alignas(64) float channel[5][kN];
-  const int channels = t.fog ? 5 : 4;
-  for (int i = 0; i < channels; ++i) {
-    if (t.constant[i] && allWellConditioned) {
-      for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
-      continue;
-    }
-    const double a0 = t.attr[0][i], a1 = t.attr[1][i], a2 = t.attr[2][i];
-    for (int k = 0; k < n; ++k) channel[i][k] = static_cast<float>((b0[k] * a0 + b1[k] * a1 + b2[k] * a2) / sum[k]);
-  }
-  finishColor(t.fog, channel, n, out);
-  return all != 0;
+  if (!t.color) return noColor(out);
+  llvmpipeColor(t.planes, t.fbHeight, t.fog, out);
 }
 
 void decideFlatColor(TriangleShading& t) {

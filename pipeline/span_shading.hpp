@@ -17,6 +17,28 @@
 
 namespace mpr {
 
+// A triangle's channels as llvmpipe interpolates them (lp_state_setup.c
+// emit_tri_coef and apply_perspective_corr, lp_bld_interp.c
+// attribs_update_simple): the colours (perspective, or the provoking
+// vertex's when flat-shaded) and the fog coordinate (perspective) each set
+// up as a plane of value / w, and the position's 1 / w as a plane; per
+// pixel, (plane at the pixel) * (1 / (1/w plane at the pixel)), in single
+// precision, every plane evaluated with fused multiply-adds.
+struct ChannelPlanes {
+  PlaneCoefficients oow;  // the position's 1 / w
+  std::array<PlaneCoefficients, 5> channel{};
+  // A channel whose value is the same at every pixel (flat, or both its
+  // plane and the 1 / w plane without gradient): that value.
+  std::array<bool, 5> uniform{};
+  std::array<float, 5> uniformValue{};
+  bool allUniform = false;  // every channel used (four, five with fog)
+};
+
+// Sets up `out` from one of llvmpipe's triangles: the colour set at
+// colorOffset (front 0, back 4) and the fog coordinate; `flat` for
+// GL_FLAT (the colours constant, the fog coordinate still interpolated).
+void setUpChannelPlanes(const LlvmpipeDepth::Triangle& t, int colorOffset, bool flat, bool fog, ChannelPlanes& out);
+
 struct TriangleShading {
   // Barycentric weights of a pixel centre: from the snapped edge functions
   // (w_i / snappedArea) where the unsnapped triangle is degenerate, else
@@ -48,30 +70,28 @@ struct TriangleShading {
   bool flatColor = false;
   double reciprocalArea = 0.0;
   const FogState* fog = nullptr;  // null when fog is off
+  // Where llvmpipe draws the triangle as one (not clipped, no window map):
+  // its own interpolation, which replaces everything above but fog.
+  bool llvmpipeColor = false;
+  ChannelPlanes channels;
 };
 
 // A triangle Mesa's draw module clips, drawn as llvmpipe's fan of it
-// (GLContext::rasterizeLlvmpipeFan): depth from one fan triangle's plane,
-// colour from the whole triangle's homogeneous weights at the pixel centre,
-// b = adj (xn, yn, 1), each channel (b . attr) / (b0 + b1 + b2).
+// (GLContext::rasterizeLlvmpipeFan): depth and colour from the planes of
+// the fan triangle, set up on the vertices draw's clipper made.
 struct FanShading {
   bool depth = false;  // llvmpipe's plane of the fan triangle (a0, dzdx, dzdy)
   float a0 = 0.0f, dzdx = 0.0f, dzdy = 0.0f;
   float depthMax = 0.0f;
   int fbHeight = 0;
   bool color = false;
-  double adj[3][3] = {};
-  float vpScaleX = 1.0f, vpTransX = 0.0f, vpScaleY = 1.0f, vpTransY = 0.0f;
-  std::array<std::array<float, 5>, 3> attr{};
-  std::array<bool, 5> constant{};
+  ChannelPlanes planes;
   const FogState* fog = nullptr;
 };
 
 // Fills out.count pixels from (out.x, out.y) as rasterizeLlvmpipeFan's
-// per-pixel loop does; with colour, kept[k] is 0 where the triangle's plane
-// is seen edge-on there (weights summing to 0: that pixel makes no
-// fragment). Returns whether every pixel is kept.
-bool shadeFanSpan(const FanShading& t, FragmentSpan& out, std::uint8_t* kept);
+// per-pixel loop does.
+void shadeFanSpan(const FanShading& t, FragmentSpan& out);
 
 // The channels a triangle's fragments interpolate, per vertex: the colour
 // set at `colorOffset` (front 0, back 4) and the fog coordinate; and which
