@@ -1,41 +1,11 @@
 #include "pipeline/fog.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
+
+#include "pipeline/llvmpipe_math.hpp"
 
 namespace mpr {
-namespace {
-
-// 2^x as llvmpipe's fragment shader computes it (lp_bld_arit.c
-// lp_build_exp2, Mesa 22.3): x clamped to [-126.99999, 128] (NaN kept), 2^floor(x) made
-// from its exponent bits, times a degree-5 minimax polynomial of the
-// fraction (lp_build_polynomial: even and odd terms in x^2 by Horner, then
-// odd x + even), every step a single-precision operation, unfused.
-float llvmpipeExp2(float x) {
-  if (std::isnan(x)) return x;
-  x = std::max(std::min(x, 128.0f), -126.99999f);
-  const float whole = std::floor(x);
-  const float fraction = x - whole;
-  const std::int32_t exponent = (static_cast<std::int32_t>(whole) + 127) << 23;
-  const float power = std::bit_cast<float>(exponent);
-  constexpr float c[6] = {1.0f,
-                          static_cast<float>(0.693153073200168932794),
-                          static_cast<float>(0.240153617044375388211),
-                          static_cast<float>(0.0558263180532956664775),
-                          static_cast<float>(0.00898934009049466391101),
-                          static_cast<float>(0.00187757667519147912699)};
-  const float x2 = fraction * fraction;
-  float odd = c[5], even = c[4];
-  odd = c[3] + x2 * odd;
-  even = c[2] + x2 * even;
-  odd = c[1] + x2 * odd;
-  even = c[0] + x2 * even;
-  return power * (odd * fraction + even);
-}
-
-}  // namespace
 
 float fogFactor(const FogState& fog, float c) {
   float f;

@@ -164,7 +164,10 @@ ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
   const Vec4& o = v.object;
   out.clip = ((mvp_[0] * o.x + mvp_[1] * o.y) + mvp_[2] * o.z) + mvp_[3] * o.w;
   const bool needEye = lightingEnabled_ || fog_.enabled;
-  const Vec4 eye = needEye ? modelview_.top() * v.object : Vec4(0.0f);
+  // The eye position as the program's get_eye_position computes it (MUL,
+  // then MADs, unfused), in the same order as the position above.
+  const Mat4& mv = modelview_.top();
+  const Vec4 eye = needEye ? ((mv[0] * o.x + mv[1] * o.y) + mv[2] * o.z) + mv[3] * o.w : Vec4(0.0f);
 
   Vec4 front, back;
   if (lightingEnabled_) {
@@ -189,10 +192,15 @@ ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
         }
       }
     }
-    Vec3 n = normalMatrix_ * v.normal;
+    // emit_matrix_transform_vec3: component i is DP3(normal, row i of the
+    // normal matrix), summed from the last channel (lighting.cpp dp3).
+    const Vec3& m = v.normal;
+    Vec3 n;
+    for (int i = 0; i < 3; ++i) n[i] = m.z * normalMatrix_[2][i] + m.y * normalMatrix_[1][i] + m.x * normalMatrix_[0][i];
     if (normalize_) {
-      const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-      if (len > 0.0f) n = n / len;
+      // emit_normalize_vec3: DP3, RSQ (a square root and a division), MUL.
+      const float lengthSquared = n.z * n.z + n.y * n.y + n.x * n.x;  // DP3, from the last channel (lighting.cpp)
+      if (lengthSquared > 0.0f) n = n * (1.0f / std::sqrt(lengthSquared));
     }
     const Vec4 lit = (departures_ & kLightingUndividedEye) ? Vec4(Vec3(eye), 1.0f) : eye;
     front = lightVertex(s, lit, n, false);
@@ -204,8 +212,18 @@ ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
     out.attr[i] = front[i];
     out.attr[4 + i] = back[i];
   }
-  // Fog coordinate: the eye-space distance |z_eye|.
-  const float fogCoord = std::fabs(eye.z);
+  // Fog coordinate: the eye-space distance |z_eye| (build_fog,
+  // FDM_EYE_PLANE_ABS): the z of the eye position where the lighting code
+  // computed it (a positional light, or a local viewer with a shininess
+  // active), else its own DP4 of the modelview's third row, summed from the
+  // last channel (nir_lower_alu_to_scalar).
+  bool eyeComputed = false;
+  if (lightingEnabled_) {
+    for (const LightSource& l : s.lights) eyeComputed = eyeComputed || (l.enabled && l.position.w != 0.0f);
+    eyeComputed = eyeComputed || (s.model.localViewer && !s.shininessKeyZero);
+  }
+  const float eyeZ = eyeComputed ? eye.z : ((mv[3][2] * o.w + mv[2][2] * o.z) + mv[1][2] * o.y) + mv[0][2] * o.x;
+  const float fogCoord = std::fabs(eyeZ);
   out.attr[8] = fog_.enabled && !fog_.perFragment ? fogFactor(fog_, fogCoord) : fogCoord;
   return out;
 }

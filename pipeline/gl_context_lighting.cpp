@@ -55,7 +55,12 @@ void GLContext::lightfv(GLenumValue light, GLenumValue pname, const float* p, in
     case GL_AMBIENT: return setIfChanged(l.ambient, vec4From(p));
     case GL_DIFFUSE: return setIfChanged(l.diffuse, vec4From(p));
     case GL_SPECULAR: return setIfChanged(l.specular, vec4From(p));
-    case GL_POSITION: return setIfChanged(l.position, mv * vec4From(p));  // eye space at specification
+    case GL_POSITION: {
+      // Eye space at specification, as TRANSFORM_POINT sums: ((m0 x + m1 y)
+      // + m2 z) + m3 w (glm would add the halves pairwise).
+      const Vec4 q = vec4From(p);
+      return setIfChanged(l.position, ((mv[0] * q.x + mv[1] * q.y) + mv[2] * q.z) + mv[3] * q.w);
+    }
     case GL_SPOT_DIRECTION:
       analyseMatrices(true, false);  // _mesa_Lightfv analyses the modelview first
       return setIfChanged(l.spotDirection, glm::mat3(mv) * Vec3(p[0], p[1], p[2]));

@@ -54,6 +54,7 @@ TEST(Lighting, SpecularInfiniteAndLocalViewer) {
   s.material[0].diffuse = Vec4(0, 0, 0, 1);
   s.material[0].specular = Vec4(1, 1, 1, 1);
   s.material[0].shininess = 2.0f;
+  s.shininessKeyZero = false;  // a shininess is active (GLContext decides it per draw)
   s.lights[0].specular = Vec4(1, 1, 1, 1);
   s.lights[0].position = Vec4(0, 0, 1, 0);
   // Infinite viewer: h = normalize(L + (0,0,1)) = (0,0,1). With n at 60
