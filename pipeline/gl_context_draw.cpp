@@ -9,6 +9,7 @@
 
 #include "pipeline/gl_context.hpp"
 #include "pipeline/llvmpipe_depth.hpp"
+#include "pipeline/llvmpipe_math.hpp"
 #include "pipeline/mesa_matrix_inverse.hpp"
 #include "pipeline/span_shading.hpp"
 #include "util/transforms.hpp"
@@ -158,16 +159,13 @@ void GLContext::rectf(float x1, float y1, float x2, float y2) {
 ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
   ClipVertex out;
   // Position through the combined matrix, as Mesa's fixed-function program
-  // computes it on llvmpipe: each row summed left to right, unfused,
-  // ((m0 x + m1 y) + m2 z) + m3 w (glm would add the two halves pairwise,
-  // which differs in the last bit; measured against llvmpipe's depths).
+  // computes it on llvmpipe (measured against llvmpipe's depths).
   const Vec4& o = v.object;
-  out.clip = ((mvp_[0] * o.x + mvp_[1] * o.y) + mvp_[2] * o.z) + mvp_[3] * o.w;
+  out.clip = mesaTransformPoint(mvp_, o);
   const bool needEye = lightingEnabled_ || fog_.enabled;
-  // The eye position as the program's get_eye_position computes it (MUL,
-  // then MADs, unfused), in the same order as the position above.
+  // The eye position as the program's get_eye_position computes it.
   const Mat4& mv = modelview_.top();
-  const Vec4 eye = needEye ? ((mv[0] * o.x + mv[1] * o.y) + mv[2] * o.z) + mv[3] * o.w : Vec4(0.0f);
+  const Vec4 eye = needEye ? mesaTransformPoint(mv, o) : Vec4(0.0f);
 
   Vec4 front, back;
   if (lightingEnabled_) {
@@ -193,13 +191,12 @@ ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
       }
     }
     // emit_matrix_transform_vec3: component i is DP3(normal, row i of the
-    // normal matrix), summed from the last channel (lighting.cpp dp3).
-    const Vec3& m = v.normal;
-    Vec3 n;
-    for (int i = 0; i < 3; ++i) n[i] = m.z * normalMatrix_[2][i] + m.y * normalMatrix_[1][i] + m.x * normalMatrix_[0][i];
+    // normal matrix).
+    const glm::mat3 rows = glm::transpose(normalMatrix_);
+    Vec3 n(llvmpipeDot3(v.normal, rows[0]), llvmpipeDot3(v.normal, rows[1]), llvmpipeDot3(v.normal, rows[2]));
     if (normalize_) {
       // emit_normalize_vec3: DP3, RSQ (a square root and a division), MUL.
-      const float lengthSquared = n.z * n.z + n.y * n.y + n.x * n.x;  // DP3, from the last channel (lighting.cpp)
+      const float lengthSquared = llvmpipeDot3(n, n);
       if (lengthSquared > 0.0f) n = n * (1.0f / std::sqrt(lengthSquared));
     }
     const Vec4 lit = (departures_ & kLightingUndividedEye) ? Vec4(Vec3(eye), 1.0f) : eye;

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "pipeline/gl_context.hpp"
+#include "pipeline/mesa_matrix_inverse.hpp"
 
 namespace mpr {
 namespace {
@@ -56,10 +57,8 @@ void GLContext::lightfv(GLenumValue light, GLenumValue pname, const float* p, in
     case GL_DIFFUSE: return setIfChanged(l.diffuse, vec4From(p));
     case GL_SPECULAR: return setIfChanged(l.specular, vec4From(p));
     case GL_POSITION: {
-      // Eye space at specification, as TRANSFORM_POINT sums: ((m0 x + m1 y)
-      // + m2 z) + m3 w (glm would add the halves pairwise).
-      const Vec4 q = vec4From(p);
-      return setIfChanged(l.position, ((mv[0] * q.x + mv[1] * q.y) + mv[2] * q.z) + mv[3] * q.w);
+      // Eye space at specification (TRANSFORM_POINT).
+      return setIfChanged(l.position, mesaTransformPoint(mv, vec4From(p)));
     }
     case GL_SPOT_DIRECTION:
       analyseMatrices(true, false);  // _mesa_Lightfv analyses the modelview first

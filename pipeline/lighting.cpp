@@ -10,9 +10,7 @@ namespace {
 
 float dot3(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-// The program's DP3 as llvmpipe runs it: nir_lower_alu_to_scalar splits
-// fdot3 into products summed from the last channel: (a.z b.z + a.y b.y) + a.x b.x.
-float dp3(const Vec3& a, const Vec3& b) { return a.z * b.z + a.y * b.y + a.x * b.x; }
+float dp3(const Vec3& a, const Vec3& b) { return llvmpipeDot3(a, b); }  // the program's DP3
 
 // emit_normalize_vec3: DP3, RSQ (a square root and a division), MUL.
 Vec3 programNormalized(const Vec3& v) { return v * (1.0f / std::sqrt(dp3(v, v))); }

@@ -4,7 +4,13 @@
 // pow, single precision, in its order of operations. Mesa's fixed-function
 // programs reach them through fog (2^x) and lighting (LIT's and the spot
 // cone's pow).
+#include "util/vecmath.hpp"
+
 namespace mpr {
+
+// A program's DP3 as llvmpipe runs it: nir_lower_alu_to_scalar splits fdot3
+// into products summed from the last channel, (a.z b.z + a.y b.y) + a.x b.x.
+inline float llvmpipeDot3(const Vec3& a, const Vec3& b) { return a.z * b.z + a.y * b.y + a.x * b.x; }
 
 // lp_build_exp2: x clamped to [-126.99999, 128] (NaN kept), 2^floor(x) from
 // exponent bits times a degree-5 minimax polynomial of the fraction.

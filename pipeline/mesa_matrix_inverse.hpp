@@ -43,4 +43,11 @@ void mesaAnalyse(const Mat4& m, MesaMatrixState& state);
 // _mesa_transform_vector: the row vector v times m, each sum left to right.
 Vec4 mesaTransformRowVector(const Vec4& v, const Mat4& m);
 
+// m p as Mesa sums it, ((m0 x + m1 y) + m2 z) + m3 w over m's columns:
+// TRANSFORM_POINT on the CPU, and the fixed-function program's MUL and
+// unfused MADs on llvmpipe (glm would add the two halves pairwise).
+inline Vec4 mesaTransformPoint(const Mat4& m, const Vec4& p) {
+  return ((m[0] * p.x + m[1] * p.y) + m[2] * p.z) + m[3] * p.w;
+}
+
 }  // namespace mpr
