@@ -238,6 +238,7 @@ class GLContext {
     bool clipped = false;              // a vertex of the draw lies outside a plane
     std::size_t vertexCount = 0;       // in the whole draw so far
     std::vector<ClipVertex> waiting;   // processed, not yet drawn (only while !clipped)
+    bool colorVarying = false;         // the colour is in the vbo's vertex format of the draw
   };
 
   // Mesa's vbo vertex format (vbo_exec_api.c): the size of each per-vertex
@@ -417,8 +418,14 @@ class GLContext {
   struct BlockWrap {
     std::size_t vertex;              // where the vbo cut this block (vertices_ index)
     std::uint8_t shininessVarying;   // shininessVarying() of the format the piece before is drawn with
+    bool colorVarying;               // the colour was in that format
   };
   std::vector<BlockWrap> blockWraps_;
+  // Whether the colour is in the vertex format of the draw end() hands on
+  // (drawProcessed reads it), and, for the draw being drawn, whether its
+  // fragments take Mesa's current colour as it is (see drawProcessed).
+  bool pieceColorVarying_ = false;
+  bool colorFromCurrent_ = false;
   GLenumValue colorMaterialFace_, colorMaterialMode_;
   Vec4 currentColor_{1, 1, 1, 1};
   Vec3 currentNormal_{0, 0, 1};

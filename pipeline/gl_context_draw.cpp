@@ -98,11 +98,12 @@ void GLContext::vboAttribute(int slot, int size) {
   if (size <= current) return;  // the same size or smaller: filled in, no wrap
   const bool first = current == 0;
   const std::uint8_t shininessBefore = shininessVarying();  // the format the stored vertices are drawn with
+  const bool colorBefore = vboSize_[kVboColor] != 0;
   current = static_cast<std::uint8_t>(size);
   if (inBegin_) {
     // vbo_exec_wrap_buffers: what the buffer holds is drawn, this block is
     // cut here (end() draws the pieces).
-    if (!vertices_.empty() || vboVertexCount_ > 0) blockWraps_.push_back({vertices_.size(), shininessBefore});
+    if (!vertices_.empty() || vboVertexCount_ > 0) blockWraps_.push_back({vertices_.size(), shininessBefore, colorBefore});
     // The new buffer starts with the vertices carried over (they count
     // towards the heuristic below: glBegin with one vertex, a wrap, eight
     // more and an attribute outside glBegin/glEnd is a reset).
@@ -136,6 +137,7 @@ void GLContext::closeQuadDraw() {
   quadDraw_.open = false;
   std::vector<ClipVertex> waiting;
   waiting.swap(quadDraw_.waiting);
+  pieceColorVarying_ = quadDraw_.colorVarying;
   if (!quadDraw_.clipped && !waiting.empty()) drawProcessed(PrimitiveType::Quads, waiting, false);
 }
 
@@ -267,10 +269,12 @@ void GLContext::end() {
   struct Piece {
     std::size_t end;      // vertices_ index where the piece stops
     bool shininessZero;   // Mesa's material_shininess_is_zero for its draw
+    bool colorVarying;    // the colour is in its vertex format
   };
   std::vector<Piece> pieces;
-  for (const BlockWrap& w : blockWraps_) pieces.push_back({w.vertex, shininessKeyZero(w.shininessVarying)});
-  pieces.push_back({vertices_.size(), shininessKeyZero(shininessVarying())});
+  for (const BlockWrap& w : blockWraps_)
+    pieces.push_back({w.vertex, shininessKeyZero(w.shininessVarying), w.colorVarying});
+  pieces.push_back({vertices_.size(), shininessKeyZero(shininessVarying()), vboSize_[kVboColor] != 0});
   blockWraps_.clear();
   // The lighting state every vertex of a draw shares, copied once (it is a
   // kilobyte); each vertex sets its own materials in it.
@@ -288,11 +292,13 @@ void GLContext::end() {
     return processed;
   };
   const bool quads = primitive_ == PrimitiveType::Quads || primitive_ == PrimitiveType::QuadStrip;
-  const bool oneProgram = std::all_of(pieces.begin(), pieces.end(),
-                                      [&](const Piece& p) { return p.shininessZero == pieces.front().shininessZero; });
+  const bool oneProgram = std::all_of(pieces.begin(), pieces.end(), [&](const Piece& p) {
+    return p.shininessZero == pieces.front().shininessZero && p.colorVarying == pieces.front().colorVarying;
+  });
   if (pieces.size() == 1 || (!quads && oneProgram)) {
     // Cutting a block of triangles, a strip, a fan or a polygon draws the
     // same triangles in the same order: it is drawn whole.
+    pieceColorVarying_ = pieces.front().colorVarying;
     std::vector<ClipVertex> processed = processPiece(nullptr, vertices_.size(), pieces.front().shininessZero);
     if (primitive_ == PrimitiveType::QuadStrip) return drawQuadStripPiece(processed);
     if (primitive_ != PrimitiveType::Quads) return drawProcessed(primitive_, processed, false);
@@ -308,6 +314,7 @@ void GLContext::end() {
     // A cut strip draws an even number of triangles so that facing is kept.
     const std::size_t drawn = !last && primitive_ == PrimitiveType::TriangleStrip ? n - n % 2 : n;
     std::vector<ClipVertex> processed = processPiece(piece.data(), drawn, pieces[p].shininessZero);
+    pieceColorVarying_ = pieces[p].colorVarying;
     if (primitive_ == PrimitiveType::Quads) {
       drawQuadsPiece(std::move(processed));
       if (!last) closeQuadDraw();
@@ -372,7 +379,7 @@ void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
   // triangles: llvmpipe gets (0, 1, 3) and (1, 2, 3) whether or not the draw
   // clips; with one colour for all it is drawn as smooth quads are (measured
   // against GL_TRIANGLES in each order: flat_quad_depth_order.gls).
-  if (flatShading_ && (lightingEnabled_ || vboSize_[kVboColor] != 0)) {
+  if (flatShading_ && (lightingEnabled_ || pieceColorVarying_)) {
     closeQuadDraw();
     return drawProcessed(PrimitiveType::Quads, processed, true);
   }
@@ -388,10 +395,12 @@ void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
   // As for strips, the draw is trimmed to whole quads first (draw_pt.c
   // draw_pt_trim_count): vertices after the last whole quad take no part.
   const bool anyOutside = anyOutsideDrawPlanes(processed, processed.size() & ~std::size_t{3});
-  if (!quadDraw_.open || quadDraw_.vertexCount % 4 != 0) {
+  const bool colorVarying = pieceColorVarying_;
+  if (!quadDraw_.open || quadDraw_.vertexCount % 4 != 0 || quadDraw_.colorVarying != colorVarying) {
     closeQuadDraw();
-    quadDraw_ = OpenQuadDraw{true, false, 0, {}};
+    quadDraw_ = OpenQuadDraw{true, false, 0, {}, colorVarying};
   }
+  pieceColorVarying_ = colorVarying;  // closeQuadDraw set it to the closed draw's
   quadDraw_.vertexCount += processed.size();
   if (quadDraw_.clipped) return drawProcessed(PrimitiveType::Quads, processed, true);
   if (anyOutside) {
@@ -425,6 +434,15 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
   // chosen once, and one set of llvmpipe planes is reused (no allocation per
   // triangle once it has grown).
   fragmentPipeline_ = chooseFragmentPipeline(frag_);
+  // Unlit, with no colour in the vbo's vertex format (none given inside
+  // glBegin/glEnd since the format was last reset), Mesa's fixed-function
+  // fragment program does not read the interpolated colour at all: it reads
+  // the current colour, clamped, as a uniform (ff_fragment_shader.cpp
+  // get_gl_Color; inputs_available from the draw's varying inputs;
+  // STATE_CURRENT_ATTRIB_MAYBE_VP_CLAMPED), so every fragment has it
+  // exactly, not as llvmpipe's perspective interpolation of it would give
+  // it (current_colour_exact.gls). Every vertex of such a draw holds it.
+  colorFromCurrent_ = !lightingEnabled_ && !pieceColorVarying_;
   // With threads and no observer the triangles are set up here and drawn
   // together at the end, their rows shared out (drawDeferred).
   deferring_ = pool_ != nullptr && !fragmentObserver;
@@ -639,12 +657,14 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   t.color = needsColor(frag_);
   for (int i = 0; i < 3; ++i) t.invW[i] = invW[i];
   vertexChannels(a, b, c, colorOffset, t.attr, t.constant);
+  t.uniformColor = flatShading_ || colorFromCurrent_;
   if (fog_.enabled) t.fog = &fog_;
   // llvmpipe draws the triangle as one: its colours are that triangle's
   // planes (also where MPR's own clipper made pieces of it).
   t.llvmpipeColor = t.color && !windowMap_ && depthPlanes.triangles.size() == 1;
   if (t.llvmpipeColor)
-    setUpChannelPlanes(depthPlanes.triangles[0], colorOffset, flatShading_, t.fog != nullptr, t.channels);
+    setUpChannelPlanes(depthPlanes.triangles[0], colorOffset, flatShading_ || colorFromCurrent_, t.fog != nullptr,
+                       t.channels);
   else
     decideFlatColor(t);
 
@@ -714,7 +734,8 @@ void GLContext::rasterizeLlvmpipeFan(const LlvmpipeDepth& depth) {
     fan.a0 = t.a0;
     fan.dzdx = t.dzdx;
     fan.dzdy = t.dzdy;
-    if (fan.color) setUpChannelPlanes(t, colorOffset, flatShading_, fan.fog != nullptr, fan.planes);
+    if (fan.color)
+      setUpChannelPlanes(t, colorOffset, flatShading_ || colorFromCurrent_, fan.fog != nullptr, fan.planes);
     // Bounds of the pixels whose centres the fixed-point edges can cover
     // (positions are (v - 0.5) * 256: pixel x's centre is at x * 256).
     const std::int64_t minX = std::min({t.fixedX[0], t.fixedX[1], t.fixedX[2]}),

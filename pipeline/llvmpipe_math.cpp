@@ -10,7 +10,8 @@ namespace mpr {
 namespace {
 
 // lp_build_polynomial: c0 + c1 x + c2 x^2 + ..., even and odd terms apart,
-// each by Horner in x^2 (unfused), then odd * x + even.
+// each by Horner in x^2, then odd * x + even, every step an lp_build_mad
+// (llvm.fmuladd, fused on a CPU with FMA; fog_exp_polynomial_fused.gls).
 template <int N>
 float polynomial(float x, const float (&c)[N]) {
   const float x2 = x * x;
@@ -18,14 +19,14 @@ float polynomial(float x, const float (&c)[N]) {
   bool haveEven = false, haveOdd = false;
   for (int i = N - 1; i >= 0; --i) {
     if (i % 2 == 0) {
-      even = haveEven ? c[i] + x2 * even : c[i];
+      even = haveEven ? std::fma(x2, even, c[i]) : c[i];
       haveEven = true;
     } else {
-      odd = haveOdd ? c[i] + x2 * odd : c[i];
+      odd = haveOdd ? std::fma(x2, odd, c[i]) : c[i];
       haveOdd = true;
     }
   }
-  return haveOdd ? odd * x + even : even;
+  return haveOdd ? std::fma(odd, x, even) : even;
 }
 
 // lp_build_exp2_polynomial, EXP_POLY_DEGREE 5 (its first coefficient 1).

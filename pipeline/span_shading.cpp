@@ -236,7 +236,7 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   alignas(64) double inv[kN];
   bool invDone = false;
   for (int i = 0; i < channels; ++i) {
-    if (t.constant[i] && allWellConditioned) {
+    if ((i < 4 && t.uniformColor) || (t.constant[i] && allWellConditioned)) {
       for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
       continue;
     }

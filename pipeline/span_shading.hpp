@@ -63,6 +63,9 @@ struct TriangleShading {
   std::array<double, 3> invW{};
   std::array<std::array<float, 5>, 3> attr{};
   std::array<bool, 5> constant{};  // attr[0][i], attr[1][i], attr[2][i] the same float (bit for bit)
+  // The colour is one value that every fragment takes as it is (flat
+  // shading, or Mesa's current colour): attr[0][0..3], not interpolated.
+  bool uniformColor = false;
   // Every channel used is constant, the weights come from the unsnapped
   // positions with no window map, and 1/w varies by at most 2^20 over the
   // vertices: a span may then take the colour without exact weights

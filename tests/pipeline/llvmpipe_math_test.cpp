@@ -3,7 +3,8 @@
 // approximation's error against libm (the minimax polynomials' own error,
 // a few parts in 10^7, not a tolerance of ours). Their bits against
 // llvmpipe itself are held by the conformance reproducers
-// (fog_exp2_polynomial.gls, lighting_program_order.gls).
+// (fog_exp2_polynomial.gls, fog_exp_polynomial_fused.gls,
+// lighting_program_order.gls).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,6 +30,16 @@ TEST(LlvmpipeMath, Exp2ClampsItsArgumentAndKeepsNaN) {
 TEST(LlvmpipeMath, Log2OfAPowerOfTwoIsItsExponent) {
   // The mantissa is 1, so y = 0 and the fused step returns the exponent.
   for (int k = -126; k <= 127; ++k) EXPECT_EQ(llvmpipeLog2(std::ldexp(1.0f, k)), static_cast<float>(k)) << k;
+}
+
+TEST(LlvmpipeMath, PolynomialStepsAreFusedMultiplyAdds) {
+  // lp_build_polynomial's steps are lp_build_mad, an llvm.fmuladd that this
+  // CPU fuses. Each input here was found where the fused evaluation and the
+  // unfused one differ (values worked out beside the code, by exact
+  // rational arithmetic rounded to single precision); the first is the
+  // fog factor of fog_exp_polynomial_fused.gls's pixel.
+  EXPECT_EQ(llvmpipeExp2(-0x1.832ad2p+0f), 0x1.66f27ep-2f);  // unfused: 0x1.66f28p-2
+  EXPECT_EQ(llvmpipeLog2(0x1.91daecp-1f), -0x1.65dafep-2f);  // unfused: -0x1.65dbp-2
 }
 
 TEST(LlvmpipeMath, Log2EdgeCases) {
