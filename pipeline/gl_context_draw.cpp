@@ -194,8 +194,13 @@ ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
     }
     // emit_matrix_transform_vec3: component i is DP3(normal, row i of the
     // normal matrix).
+    // In object space (LightingState::objectSpace) the program takes the
+    // normal as given (times the normal scale, 1 for a length-preserving
+    // modelview).
     const glm::mat3 rows = glm::transpose(normalMatrix_);
-    Vec3 n(llvmpipeDot3(v.normal, rows[0]), llvmpipeDot3(v.normal, rows[1]), llvmpipeDot3(v.normal, rows[2]));
+    Vec3 n = s.objectSpace ? v.normal
+                           : Vec3(llvmpipeDot3(v.normal, rows[0]), llvmpipeDot3(v.normal, rows[1]),
+                                  llvmpipeDot3(v.normal, rows[2]));
     if (normalize_) {
       // emit_normalize_vec3: DP3, RSQ (a square root and a division), MUL.
       const float lengthSquared = llvmpipeDot3(n, n);
@@ -279,7 +284,20 @@ void GLContext::end() {
   // The lighting state every vertex of a draw shares, copied once (it is a
   // kilobyte); each vertex sets its own materials in it.
   LightingState vertexLighting;
-  if (lightingEnabled_) vertexLighting = lighting_;
+  if (lightingEnabled_) {
+    vertexLighting = lighting_;
+    // _mesa_update_tnl_spaces: eye coordinates are needed for a positional
+    // light, a local viewer, or a modelview whose Mesa flags are not only
+    // rotation and translation (_math_matrix_is_length_preserving, on the
+    // flags analysed at glBegin); otherwise Mesa lights in object space
+    // (lighting_object_space.gls). A spot light keeps eye space too
+    // (measured: lighting seed 1329, a directional spot light).
+    bool needEyeCoords = lighting_.model.localViewer ||
+                         (modelview_.mesaTop().flags & mesa_matrix::kGeometry &
+                          ~(mesa_matrix::kRotation | mesa_matrix::kTranslation)) != 0;
+    for (const LightSource& l : lighting_.lights) needEyeCoords = needEyeCoords || (l.enabled && (l.position.w != 0.0f || l.spotCutoff != 180.0f));
+    if (!needEyeCoords) toObjectSpace(vertexLighting, modelview_.top(), modelview_.mesaTop().inverse);
+  }
   // The first `count` of `indices` (vertices_ indices; all of vertices_
   // when null), lit by the program a piece's draw selects.
   auto processPiece = [&](const std::size_t* indices, std::size_t count, bool shininessZero) {

@@ -1,5 +1,7 @@
 #include "pipeline/lighting.hpp"
 
+#include "pipeline/mesa_matrix_inverse.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -46,11 +48,26 @@ Vec3 mad(float a, const Vec3& b, const Vec3& c) { return a * b + c; }
 //    ambient product (with attenuation) or col = ambient product + col
 //    (without), col = lit.y * diffuse product + col, col = lit.z *
 //    specular product + col, each MAD unfused.
+void toObjectSpace(LightingState& s, const Mat4& modelview, const Mat4& inverse) {
+  s.objectSpace = true;
+  // TRANSFORM_NORMAL(_EyeZDir, (0, 0, 1), m): the third entry of each column.
+  s.eyeZDirection = Vec3(modelview[0][2], modelview[1][2], modelview[2][2]);
+  for (LightSource& l : s.lights) {
+    if (!l.enabled) continue;
+    l.position = mesaTransformPoint(inverse, l.position);  // TRANSFORM_POINT(_Position, inv, EyePosition)
+    // _NormSpotDirection: normalised, then TRANSFORM_NORMAL by the modelview
+    // (a row vector times it), summed left to right.
+    const Vec3 d = normalizedByReciprocal(l.spotDirection);
+    for (int i = 0; i < 3; ++i)
+      l.spotDirection[i] = (d.x * modelview[i][0] + d.y * modelview[i][1]) + d.z * modelview[i][2];
+  }
+}
+
 Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, bool back) {
   const Material& m = s.material[back ? 1 : 0];
   const Vec3 n = back ? -normalIn : normalIn;
   const Vec3 v = eye.w != 0.0f ? Vec3(eye) / eye.w : Vec3(eye);
-  const Vec3 zAxis(0.0f, 0.0f, 1.0f);
+  const Vec3 zAxis = s.eyeZDirection;
 
   Vec3 c = Vec3(s.model.ambient) * Vec3(m.ambient) + Vec3(m.emission);
   for (const LightSource& l : s.lights) {
@@ -73,7 +90,7 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
     const bool attenuated = spotLight || distanceAttenuated;
     float attenuation = 1.0f;
     if (spotLight) {
-      const Vec3 direction = normalizedByReciprocal(l.spotDirection);
+      const Vec3 direction = s.objectSpace ? l.spotDirection : normalizedByReciprocal(l.spotDirection);
       const float cosCutoff = static_cast<float>(std::cos(l.spotCutoff * 3.14159265358979323846 / 180.0));
       const float cosAngle = dp3(-toLight, direction);
       // Mesa's SLT is strict; GL 1.1 keeps a vertex on the cone's edge
