@@ -137,8 +137,11 @@ void GLContext::closeQuadDraw() {
   quadDraw_.open = false;
   std::vector<ClipVertex> waiting;
   waiting.swap(quadDraw_.waiting);
+  // Drawn with its own vertex format; the piece end() is handing on keeps its.
+  const bool pieceColorVarying = pieceColorVarying_;
   pieceColorVarying_ = quadDraw_.colorVarying;
   if (!quadDraw_.clipped && !waiting.empty()) drawProcessed(PrimitiveType::Quads, waiting, false);
+  pieceColorVarying_ = pieceColorVarying;
 }
 
 void GLContext::rectf(float x1, float y1, float x2, float y2) {
@@ -413,12 +416,10 @@ void GLContext::drawQuadsPiece(std::vector<ClipVertex> processed) {
   // As for strips, the draw is trimmed to whole quads first (draw_pt.c
   // draw_pt_trim_count): vertices after the last whole quad take no part.
   const bool anyOutside = anyOutsideDrawPlanes(processed, processed.size() & ~std::size_t{3});
-  const bool colorVarying = pieceColorVarying_;
-  if (!quadDraw_.open || quadDraw_.vertexCount % 4 != 0 || quadDraw_.colorVarying != colorVarying) {
+  if (!quadDraw_.open || quadDraw_.vertexCount % 4 != 0 || quadDraw_.colorVarying != pieceColorVarying_) {
     closeQuadDraw();
-    quadDraw_ = OpenQuadDraw{true, false, 0, {}, colorVarying};
+    quadDraw_ = OpenQuadDraw{true, false, 0, {}, pieceColorVarying_};
   }
-  pieceColorVarying_ = colorVarying;  // closeQuadDraw set it to the closed draw's
   quadDraw_.vertexCount += processed.size();
   if (quadDraw_.clipped) return drawProcessed(PrimitiveType::Quads, processed, true);
   if (anyOutside) {
