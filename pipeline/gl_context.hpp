@@ -421,11 +421,19 @@ class GLContext {
     bool colorVarying;               // the colour was in that format
   };
   std::vector<BlockWrap> blockWraps_;
-  // Whether the colour is in the vertex format of the draw end() hands on
-  // (drawProcessed reads it), and, for the draw being drawn, whether its
-  // fragments take Mesa's current colour as it is (see drawProcessed).
+  // Whether the colour is in the vertex format of the draw being drawn (set
+  // by end() per piece, by closeQuadDraw for the quad draw it closes).
   bool pieceColorVarying_ = false;
-  bool colorFromCurrent_ = false;
+  // Whether every fragment of the draw being drawn takes one colour as it is:
+  // flat shading, or Mesa's current colour. Unlit, with no colour in the
+  // vbo's vertex format (none given inside glBegin/glEnd since the format
+  // was last reset), Mesa's fixed-function fragment program does not read
+  // the interpolated colour: it reads the current colour, clamped, as a
+  // uniform (ff_fragment_shader.cpp get_gl_Color;
+  // STATE_CURRENT_ATTRIB_MAYBE_VP_CLAMPED), exactly, not as llvmpipe's
+  // perspective interpolation would give it (current_colour_exact.gls).
+  // Every vertex of such a draw holds that colour.
+  bool uniformColor() const { return flatShading_ || (!lightingEnabled_ && !pieceColorVarying_); }
   GLenumValue colorMaterialFace_, colorMaterialMode_;
   Vec4 currentColor_{1, 1, 1, 1};
   Vec3 currentNormal_{0, 0, 1};

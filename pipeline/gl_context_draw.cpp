@@ -289,17 +289,9 @@ void GLContext::end() {
   LightingState vertexLighting;
   if (lightingEnabled_) {
     vertexLighting = lighting_;
-    // _mesa_update_tnl_spaces: eye coordinates are needed for a positional
-    // light, a local viewer, or a modelview whose Mesa flags are not only
-    // rotation and translation (_math_matrix_is_length_preserving, on the
-    // flags analysed at glBegin); otherwise Mesa lights in object space
-    // (lighting_object_space.gls). A spot light keeps eye space too
-    // (measured: lighting seed 1329, a directional spot light).
-    bool needEyeCoords = lighting_.model.localViewer ||
-                         (modelview_.mesaTop().flags & mesa_matrix::kGeometry &
-                          ~(mesa_matrix::kRotation | mesa_matrix::kTranslation)) != 0;
-    for (const LightSource& l : lighting_.lights) needEyeCoords = needEyeCoords || (l.enabled && (l.position.w != 0.0f || l.spotCutoff != 180.0f));
-    if (!needEyeCoords) toObjectSpace(vertexLighting, modelview_.top(), modelview_.mesaTop().inverse);
+    // On the flags analysed at glBegin (lighting_object_space.gls).
+    if (mesaLightsInObjectSpace(lighting_, modelview_.mesaTop().flags))
+      toObjectSpace(vertexLighting, modelview_.top(), modelview_.mesaTop().inverse);
   }
   // The first `count` of `indices` (vertices_ indices; all of vertices_
   // when null), lit by the program a piece's draw selects.
@@ -453,15 +445,6 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
   // chosen once, and one set of llvmpipe planes is reused (no allocation per
   // triangle once it has grown).
   fragmentPipeline_ = chooseFragmentPipeline(frag_);
-  // Unlit, with no colour in the vbo's vertex format (none given inside
-  // glBegin/glEnd since the format was last reset), Mesa's fixed-function
-  // fragment program does not read the interpolated colour at all: it reads
-  // the current colour, clamped, as a uniform (ff_fragment_shader.cpp
-  // get_gl_Color; inputs_available from the draw's varying inputs;
-  // STATE_CURRENT_ATTRIB_MAYBE_VP_CLAMPED), so every fragment has it
-  // exactly, not as llvmpipe's perspective interpolation of it would give
-  // it (current_colour_exact.gls). Every vertex of such a draw holds it.
-  colorFromCurrent_ = !lightingEnabled_ && !pieceColorVarying_;
   // With threads and no observer the triangles are set up here and drawn
   // together at the end, their rows shared out (drawDeferred).
   deferring_ = pool_ != nullptr && !fragmentObserver;
@@ -676,14 +659,13 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   t.color = needsColor(frag_);
   for (int i = 0; i < 3; ++i) t.invW[i] = invW[i];
   vertexChannels(a, b, c, colorOffset, t.attr, t.constant);
-  t.uniformColor = flatShading_ || colorFromCurrent_;
+  t.uniformColor = uniformColor();
   if (fog_.enabled) t.fog = &fog_;
   // llvmpipe draws the triangle as one: its colours are that triangle's
   // planes (also where MPR's own clipper made pieces of it).
   t.llvmpipeColor = t.color && !windowMap_ && depthPlanes.triangles.size() == 1;
   if (t.llvmpipeColor)
-    setUpChannelPlanes(depthPlanes.triangles[0], colorOffset, flatShading_ || colorFromCurrent_, t.fog != nullptr,
-                       t.channels);
+    setUpChannelPlanes(depthPlanes.triangles[0], colorOffset, t.uniformColor, t.fog != nullptr, t.channels);
   else
     decideFlatColor(t);
 
@@ -753,8 +735,7 @@ void GLContext::rasterizeLlvmpipeFan(const LlvmpipeDepth& depth) {
     fan.a0 = t.a0;
     fan.dzdx = t.dzdx;
     fan.dzdy = t.dzdy;
-    if (fan.color)
-      setUpChannelPlanes(t, colorOffset, flatShading_ || colorFromCurrent_, fan.fog != nullptr, fan.planes);
+    if (fan.color) setUpChannelPlanes(t, colorOffset, uniformColor(), fan.fog != nullptr, fan.planes);
     // Bounds of the pixels whose centres the fixed-point edges can cover
     // (positions are (v - 0.5) * 256: pixel x's centre is at x * 256).
     const std::int64_t minX = std::min({t.fixedX[0], t.fixedX[1], t.fixedX[2]}),

@@ -1,11 +1,10 @@
 #include "pipeline/lighting.hpp"
 
-#include "pipeline/mesa_matrix_inverse.hpp"
-
 #include <algorithm>
 #include <cmath>
 
 #include "pipeline/llvmpipe_math.hpp"
+#include "pipeline/mesa_matrix_inverse.hpp"
 
 namespace mpr {
 namespace {
@@ -32,6 +31,30 @@ Vec3 mad(float a, const Vec3& b, const Vec3& c) { return a * b + c; }
 
 }  // namespace
 
+bool mesaLightsInObjectSpace(const LightingState& s, unsigned modelviewFlags) {
+  // _mesa_update_tnl_spaces: eye coordinates are needed for a positional
+  // light, a local viewer, or a modelview whose Mesa flags are not only
+  // rotation and translation (_math_matrix_is_length_preserving). A spot
+  // light needs them too (measured: lighting seed 1329, a directional spot
+  // light, lighting_spot_eye_space.gls).
+  if (s.model.localViewer) return false;
+  if ((modelviewFlags & mesa_matrix::kGeometry & ~(mesa_matrix::kRotation | mesa_matrix::kTranslation)) != 0)
+    return false;
+  for (const LightSource& l : s.lights)
+    if (l.enabled && (l.position.w != 0.0f || l.spotCutoff != 180.0f)) return false;
+  return true;
+}
+
+void toObjectSpace(LightingState& s, const Mat4& modelview, const Mat4& inverse) {
+  s.objectSpace = true;
+  // TRANSFORM_NORMAL(_EyeZDir, (0, 0, 1), m): the third entry of each column.
+  s.eyeZDirection = Vec3(modelview[0][2], modelview[1][2], modelview[2][2]);
+  // TRANSFORM_POINT(_Position, inv, EyePosition); no light here is a spot
+  // light (mesaLightsInObjectSpace), so no spot direction moves.
+  for (LightSource& l : s.lights)
+    if (l.enabled) l.position = mesaTransformPoint(inverse, l.position);
+}
+
 // Mesa's fixed-function vertex program (ffvertex_prog.c build_lighting and
 // calculate_light_attenuation, Mesa 22.3), step for step in its order and
 // single precision, so that a lit colour is llvmpipe's to the last bit:
@@ -48,21 +71,6 @@ Vec3 mad(float a, const Vec3& b, const Vec3& c) { return a * b + c; }
 //    ambient product (with attenuation) or col = ambient product + col
 //    (without), col = lit.y * diffuse product + col, col = lit.z *
 //    specular product + col, each MAD unfused.
-void toObjectSpace(LightingState& s, const Mat4& modelview, const Mat4& inverse) {
-  s.objectSpace = true;
-  // TRANSFORM_NORMAL(_EyeZDir, (0, 0, 1), m): the third entry of each column.
-  s.eyeZDirection = Vec3(modelview[0][2], modelview[1][2], modelview[2][2]);
-  for (LightSource& l : s.lights) {
-    if (!l.enabled) continue;
-    l.position = mesaTransformPoint(inverse, l.position);  // TRANSFORM_POINT(_Position, inv, EyePosition)
-    // _NormSpotDirection: normalised, then TRANSFORM_NORMAL by the modelview
-    // (a row vector times it), summed left to right.
-    const Vec3 d = normalizedByReciprocal(l.spotDirection);
-    for (int i = 0; i < 3; ++i)
-      l.spotDirection[i] = (d.x * modelview[i][0] + d.y * modelview[i][1]) + d.z * modelview[i][2];
-  }
-}
-
 Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, bool back) {
   const Material& m = s.material[back ? 1 : 0];
   const Vec3 n = back ? -normalIn : normalIn;
@@ -90,7 +98,7 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
     const bool attenuated = spotLight || distanceAttenuated;
     float attenuation = 1.0f;
     if (spotLight) {
-      const Vec3 direction = s.objectSpace ? l.spotDirection : normalizedByReciprocal(l.spotDirection);
+      const Vec3 direction = normalizedByReciprocal(l.spotDirection);
       const float cosCutoff = static_cast<float>(std::cos(l.spotCutoff * 3.14159265358979323846 / 180.0));
       const float cosAngle = dp3(-toLight, direction);
       // Mesa's SLT is strict; GL 1.1 keeps a vertex on the cone's edge

@@ -56,19 +56,25 @@ struct LightingState {
   // max(N.H, 0)^shininess, which llvmpipe makes 0 at N.H <= 0 even for a
   // shininess of 0 (GL leaves 0^0 open): shininess_zero_power.gls.
   bool shininessKeyZero = true;
-  // Mesa lights in object space where nothing needs eye coordinates (light.c
-  // _mesa_update_tnl_spaces: every enabled light directional, no local
-  // viewer, a length-preserving modelview): the program takes the normal as
-  // given (ffvertex_prog.c need_eye_coords), the lights' directions by the
+  // Mesa lights in object space where nothing needs eye coordinates
+  // (mesaLightsInObjectSpace): the program takes the normal as given
+  // (ffvertex_prog.c need_eye_coords), the lights' directions by the
   // modelview's inverse and the half vector's eye z by its third row
-  // (compute_light_positions). Then the positions and spot directions above
-  // are in object space, each spot direction normalised already.
+  // (compute_light_positions). Then the light positions above are in object
+  // space.
   bool objectSpace = false;
   Vec3 eyeZDirection{0.0f, 0.0f, 1.0f};  // Mesa's _EyeZDir
 };
 
+// Whether Mesa lights `s` in object space under a modelview with Mesa's
+// flags `modelviewFlags` (light.c _mesa_update_tnl_spaces): every enabled
+// light directional and none a spot light, no local viewer, the modelview
+// rotation and translation only.
+bool mesaLightsInObjectSpace(const LightingState& s, unsigned modelviewFlags);
+
 // Puts `s`'s lights into object space as Mesa does for `modelview` (whose
 // inverse Mesa keeps as `inverse`): sets objectSpace and eyeZDirection.
+// Only for a state mesaLightsInObjectSpace accepts.
 void toObjectSpace(LightingState& s, const Mat4& modelview, const Mat4& inverse);
 
 // The lit colour of a vertex at eye position `eye` with unit or non-unit eye
