@@ -3,6 +3,7 @@
 // and scissor (done by the caller through the raster bounds), alpha test,
 // stencil test, depth test, stencil update, blending, colour write mask.
 // Dithering is implementation-defined and not done (spec: scripts disable it).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -55,6 +56,14 @@ enum class FragmentFate : std::uint8_t { AlphaFailed, StencilFailed, DepthFailed
   // lanes (arithmetic inside a branch it may not speculate, trapping math).
   const float rounded = (v + k2p23) - k2p23;
   return v < k2p23 ? rounded : v;
+}
+
+// A window depth to the stored integer as llvmpipe's fragment shader writes
+// it: clamped to [0, 1] ((0 < z) ? z : 0 takes NaN to 0), scaled in single
+// precision, rounded to nearest even.
+[[gnu::always_inline]] inline std::uint32_t windowDepthToWord(float z, float depthMax) {
+  const float clamped = std::min(std::max(0.0f, z), 1.0f);
+  return static_cast<std::uint32_t>(static_cast<std::int32_t>(roundNonNegative(clamped * depthMax)));
 }
 
 // Float colour in [0, 1] to an 8-bit channel: clamp, scale, round to nearest even.

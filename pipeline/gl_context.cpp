@@ -78,7 +78,7 @@ GLContext::GLContext(int width, int height, const HardwareProfile& profile)
   viewport(0, 0, width, height);
   scissorBox_ = {0, 0, width, height};
   setterValues_.scissor = {0, 0, width, height};
-  clearValues_.depth = fb_.profile().depthMax();
+  clearValues_.depth = quadClearDepth_ = fb_.profile().depthMax();
   // GL's initial masks are all ones; held at the stencil width.
   frag_.stencil.valueMask = frag_.stencil.writeMask = fb_.profile().stencilMax();
   lighting_.lights[0].diffuse = Vec4(1, 1, 1, 1);
@@ -163,6 +163,12 @@ void GLContext::clearDepth(double d) {
   d = std::isnan(d) ? 0.0 : std::clamp(d, 0.0, 1.0);
   // util_pack_z: round to nearest, 1.0 exactly to the maximum.
   clearValues_.depth = static_cast<std::uint32_t>(std::nearbyint(d * fb_.profile().depthMax()));
+  // A clear Mesa draws as a quad (clearByQuad) carries the depth as a vertex:
+  // st_cb_clear.c clear_with_quad's z = Depth.Clear * 2 - 1 (in double, then
+  // a float), cso_set_viewport_dims' z * 0.5 + 0.5, stored as a fragment's
+  // depth is (clear_by_quad.gls).
+  const float z = static_cast<float>(d * 2.0f - 1.0f);
+  quadClearDepth_ = windowDepthToWord(std::fma(z, 0.5f, 0.5f), static_cast<float>(fb_.profile().depthMax()));
 }
 
 void GLContext::clearStencil(int s) {
@@ -193,7 +199,24 @@ void GLContext::clear(std::uint32_t mask) {
   which.accum = mask & GL_ACCUM_BUFFER_BIT;
   const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
   const ClearMasks masks{frag_.colorMask, frag_.depth.writeMask, frag_.stencil.writeMask};
-  forRowBlocks(region, [&](const PixelRect& rows) { clearBuffers(fb_, rows, which, clearValues_, masks); });
+  ClearValues values = clearValues_;
+  if (which.depth && clearByQuad(which)) values.depth = quadClearDepth_;
+  forRowBlocks(region, [&](const PixelRect& rows) { clearBuffers(fb_, rows, which, values, masks); });
+}
+
+// Whether Mesa's state tracker clears the depth buffer by drawing a quad
+// instead of with pipe->clear (st_cb_clear.c st_Clear): a scissor box short
+// of the window (llvmpipe has no scissored clear), or a stencil clear under a
+// partial write mask, which takes depth along ("always clear depth and
+// stencil together"). The other buffers come out the same either way.
+bool GLContext::clearByQuad(const ClearBuffers& which) const {
+  if (!frag_.depth.writeMask) return false;
+  const auto& s = setterValues_.scissor;
+  const bool scissorQuad = scissorEnabled_ && (s[0] > 0 || s[1] > 0 || std::int64_t{s[0]} + s[2] < fb_.width() ||
+                                               std::int64_t{s[1]} + s[3] < fb_.height());
+  const std::uint32_t stencilMask = frag_.stencil.writeMask & 0xFF;
+  const bool stencilQuad = which.stencil && stencilMask != 0 && (scissorQuad || stencilMask != 0xFF);
+  return scissorQuad || stencilQuad;
 }
 
 void GLContext::colorMask(bool r, bool g, bool b, bool a) {

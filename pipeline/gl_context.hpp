@@ -220,6 +220,8 @@ class GLContext {
   int threads() const { return pool_ ? pool_->threads() : 1; }
 
  private:
+  bool clearByQuad(const ClearBuffers& which) const;
+
   struct Vertex {  // what glVertex captures, processed at glEnd
     Vec4 object;
     Vec4 color;
@@ -381,6 +383,7 @@ class GLContext {
   PixelRect scissorBox_;
   bool scissorEnabled_ = false;
   ClearValues clearValues_;
+  std::uint32_t quadClearDepth_ = 0;  // the depth a clear drawn as a quad stores (clearByQuad)
   std::array<float, 4> clearAccumValue_{0, 0, 0, 0};
   FragmentState frag_;
   FragmentPipeline fragmentPipeline_{};  // processFragment specialised for frag_, chosen per draw

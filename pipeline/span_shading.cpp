@@ -24,11 +24,7 @@ constexpr int kN = FragmentSpan::kCapacity;
 // 1) (NaN, -0 and below to 0, 1 and above to 1) times the float maximum, a
 // single-precision product, rounded to nearest even.
 [[gnu::always_inline]] inline void storeDepths(const float (&z)[kN], float depthMax, FragmentSpan& out) {
-  for (int k = 0; k < out.count; ++k) {
-    const float positive = std::max(0.0f, z[k]);  // (0 < z) ? z : 0
-    const float clamped = std::min(positive, 1.0f);
-    out.depth[k] = static_cast<std::uint32_t>(static_cast<std::int32_t>(roundNonNegative(clamped * depthMax)));
-  }
+  for (int k = 0; k < out.count; ++k) out.depth[k] = windowDepthToWord(z[k], depthMax);
 }
 
 // Fragments of a state that writes no colour carry none.
