@@ -243,11 +243,15 @@ void GLContext::end() {
   // GL 1.1 section 2.10.3: normals by the inverse transpose of the
   // modelview's upper 3x3. Mesa's fixed-function program takes the upper 3x3
   // of the 4x4 inverse instead (ffvertex_prog.c, STATE_MODELVIEW_MATRIX_INVTRANS),
-  // the same for an affine modelview, not for a projective one (the
+  // the same matrix for an affine modelview, so MPR takes Mesa's, its
+  // roundings included (a rotation's inverse is its transpose, exactly:
+  // m_matrix.c invert_matrix_3d); not for a projective one (the
   // projective_normal_matrix departure).
-  normalMatrix_ = (departures_ & kProjectiveNormalMatrix)
+  const Mat4& mv = modelview_.top();
+  const bool affine = mv[0][3] == 0.0f && mv[1][3] == 0.0f && mv[2][3] == 0.0f;
+  normalMatrix_ = (affine || (departures_ & kProjectiveNormalMatrix))
                       ? glm::transpose(glm::mat3(modelview_.mesaTop().inverse))
-                      : glm::transpose(glm::inverse(glm::mat3(modelview_.top())));
+                      : glm::transpose(glm::inverse(glm::mat3(mv)));
   clipPlanesClip_ = viewVolumePlanes();
   // _mesa_update_clip_plane: the eye plane by the projection's inverse as
   // Mesa keeps it (the clip-space planes st_atom_clip.c hands the draw module).
