@@ -65,7 +65,7 @@ void toObjectSpace(LightingState& s, const Mat4& modelview, const Mat4& inverse)
 //    directional one's VP its position normalised (NORMALIZE_3FV);
 //  - the spot factor (-VP.s >= cos cutoff) * |-VP.s|^exponent, s the
 //    normalised spot direction; the distance factor 1 / (k0 (1/d) d + k1 d +
-//    k2 d d) with d = 1 / (1/d) (RCP, MUL, DP3, RCP);
+//    k2 d d) (RCP, MUL, DP3, RCP; d and d d as below);
 //  - LIT: (1, max(N.VP, 0), N.VP > 0 ? max(N.H, 0)^shininess : 0, 1), times
 //    the attenuation when there is one; the colour then col += lit.x *
 //    ambient product (with attenuation) or col = ambient product + col
@@ -82,10 +82,11 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
     if (!l.enabled) continue;
     const bool positional = l.position.w != 0.0f;
     Vec3 toLight;
-    float inverseDistance = 0.0f;
+    float inverseDistance = 0.0f, squaredDistance = 0.0f;
     if (positional) {
       toLight = Vec3(l.position) / l.position.w - v;
-      inverseDistance = 1.0f / std::sqrt(dp3(toLight, toLight));
+      squaredDistance = dp3(toLight, toLight);
+      inverseDistance = 1.0f / std::sqrt(squaredDistance);
       toLight = toLight * inverseDistance;
     } else {
       toLight = normalizedByReciprocal(Vec3(l.position));
@@ -107,9 +108,18 @@ Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, 
       attenuation = inside * llvmpipePow(std::fabs(cosAngle), l.spotExponent);  // POW
     }
     if (distanceAttenuated) {
-      const float d = 1.0f / inverseDistance;
-      const float one = inverseDistance * d, dd = d * d;
-      const float factor = 1.0f / (l.constantAttenuation * one + l.linearAttenuation * d + l.quadraticAttenuation * dd);
+      // RCP, MUL, DP3 as llvmpipe runs them after NIR's algebraic pass: the
+      // RCP of the RSQ a square root (frcp(frsq(a)) -> fsqrt(a)), d d the
+      // squared distance itself (fsqrt(a) * fsqrt(a) -> a), the DP3 summed
+      // from the last channel as every DP3 of the program. Measured: of the
+      // orders and forms tried, only this one gives both the periscope's and
+      // the bathroom's whole renders llvmpipe's bytes
+      // (lighting_attenuation_dp3.gls).
+      const float d = std::sqrt(squaredDistance);
+      const float one = inverseDistance * d;
+      const float factor =
+          1.0f / llvmpipeDot3(Vec3(l.constantAttenuation, l.linearAttenuation, l.quadraticAttenuation),
+                              Vec3(one, d, squaredDistance));
       attenuation = spotLight ? factor * attenuation : factor;
     }
     const float nDotL = dp3(n, toLight);
