@@ -286,7 +286,7 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   c->add_option("--seed", opts->seed, "first seed of --random (default 1)");
   c->add_option("--family", opts->family,
                 "family of the --random scripts: default (dyadic, orthographic), perspective, matrices, "
-                "primitives, lighting, fog, clip_planes, accumulation, mixed");
+                "primitives, lighting, fog, clip_planes, accumulation, mixed, fragment_ops");
   c->add_option("--min-within", opts->minWithin,
                  "exit 0 when at least this percentage of the scripts is within bounds (default 100)");
   c->add_flag("--print", opts->print, "print the --random scripts instead of running them");

@@ -20,6 +20,8 @@ enum class Step {
   FragmentState, Stencil, Blend, CullShade, Clear, Snapshot, Geometry,
   Light, LightModel, Material, ColorMaterial, Normalize,
   Fog, ClipPlane, Accum, Toggle,
+  // fragment_ops: every value of the per-fragment state, scissor and masks.
+  Scissor, WriteMasks, StencilAny, BlendAny, AlphaAny, DepthAny, ClearAny,
 };
 
 struct Weighted {
@@ -191,7 +193,70 @@ class FamilyGenerator {
       case Step::Toggle:
         s_ << (chance(60) ? "glEnable " : "glDisable ") << (chance(50) ? "GL_LIGHTING" : "GL_FOG") << "\n";
         break;
+      case Step::Scissor:
+        if (chance(25)) {
+          s_ << "glDisable GL_SCISSOR_TEST\n";
+        } else {
+          s_ << "glEnable GL_SCISSOR_TEST\n";
+          if (chance(20)) s_ << "glScissor 0 0 " << w_ << " " << h_ << "\n";  // the window: Mesa clears it unscissored
+          else s_ << "glScissor " << uniform(-4, w_) << " " << uniform(-4, h_) << " " << uniform(0, w_ + 4) << " "
+                  << uniform(0, h_ + 4) << "\n";
+        }
+        break;
+      case Step::WriteMasks:
+        s_ << "glColorMask";
+        for (int i = 0; i < 4; ++i) s_ << (chance(70) ? " GL_TRUE" : " GL_FALSE");
+        s_ << "\nglStencilMask " << pick(masks()) << "\n";
+        if (chance(30)) s_ << "glDepthMask " << (chance(70) ? "GL_TRUE" : "GL_FALSE") << "\n";
+        break;
+      case Step::StencilAny:
+        s_ << (chance(85) ? "glEnable" : "glDisable") << " GL_STENCIL_TEST\nglStencilFunc " << pick(funcs()) << " "
+           << uniform(-20, 300) << " " << pick(masks()) << "\nglStencilOp " << pick(stencilOps()) << " "
+           << pick(stencilOps()) << " " << pick(stencilOps()) << "\n";
+        break;
+      case Step::BlendAny: {
+        static const std::vector<std::string> dst = {"GL_ZERO", "GL_ONE", "GL_SRC_COLOR", "GL_ONE_MINUS_SRC_COLOR",
+                                                     "GL_DST_COLOR", "GL_ONE_MINUS_DST_COLOR", "GL_SRC_ALPHA",
+                                                     "GL_ONE_MINUS_SRC_ALPHA", "GL_DST_ALPHA", "GL_ONE_MINUS_DST_ALPHA"};
+        std::vector<std::string> src = dst;
+        src.push_back("GL_SRC_ALPHA_SATURATE");
+        s_ << (chance(80) ? "glEnable" : "glDisable") << " GL_BLEND\nglBlendFunc " << pick(src) << " " << pick(dst)
+           << "\n";
+        break;
+      }
+      case Step::AlphaAny:
+        s_ << (chance(75) ? "glEnable" : "glDisable") << " GL_ALPHA_TEST\nglAlphaFunc " << pick(funcs()) << " "
+           << num(real(-0.2, 1.2)) << "\n";
+        break;
+      case Step::DepthAny:
+        s_ << (chance(85) ? "glEnable" : "glDisable") << " GL_DEPTH_TEST\nglDepthFunc " << pick(funcs()) << "\n";
+        break;
+      case Step::ClearAny:
+        if (chance(50)) s_ << "glClearColor " << nums({real(-0.2, 1.2), real(0, 1), real(0, 1), real(0, 1)}) << "\n";
+        if (chance(60)) s_ << "glClearDepth " << num(real(0, 1)) << "\n";
+        if (chance(50)) s_ << "glClearStencil " << uniform(0, 300) << "\n";
+        if (chance(20)) s_ << "glClearAccum " << nums({real(-1, 1), real(-1, 1), real(-1, 1), real(-1, 1)}) << "\n";
+        s_ << "glClear " << pick(std::vector<std::string>{
+                                "GL_COLOR_BUFFER_BIT", "GL_DEPTH_BUFFER_BIT", "GL_STENCIL_BUFFER_BIT",
+                                "GL_DEPTH_BUFFER_BIT|GL_STENCIL_BUFFER_BIT", "GL_ACCUM_BUFFER_BIT",
+                                "GL_COLOR_BUFFER_BIT|GL_DEPTH_BUFFER_BIT|GL_STENCIL_BUFFER_BIT|GL_ACCUM_BUFFER_BIT"})
+           << "\n";
+        break;
     }
+  }
+  static const std::vector<std::string>& funcs() {
+    static const std::vector<std::string> f = {"GL_NEVER", "GL_LESS", "GL_EQUAL", "GL_LEQUAL",
+                                               "GL_GREATER", "GL_NOTEQUAL", "GL_GEQUAL", "GL_ALWAYS"};
+    return f;
+  }
+  static const std::vector<std::string>& stencilOps() {
+    static const std::vector<std::string> o = {"GL_KEEP", "GL_ZERO", "GL_REPLACE", "GL_INCR",
+                                               "GL_DECR", "GL_INVERT", "GL_INCR_WRAP", "GL_DECR_WRAP"};
+    return o;
+  }
+  static const std::vector<std::string>& masks() {
+    static const std::vector<std::string> m = {"0xFF", "0x0F", "0xF0", "0x01", "0x80", "0x7F", "0x00", "0x3C", "0xAA"};
+    return m;
   }
 
   // The view: the objects live in [-2, 2]^3 about the origin, which the
@@ -509,6 +574,11 @@ const std::vector<Family>& families() {
         {S::LightModel, 1}, {S::Material, 1}, {S::ColorMaterial, 1}, {S::Normalize, 1}, {S::Fog, 2},
         {S::ClipPlane, 2}, {S::Accum, 2}, {S::Toggle, 2}},
        40, 50, 40, true},
+      {"fragment_ops",
+       {{S::Projection, 1}, {S::Modelview, 2}, {S::Geometry, 10}, {S::Scissor, 2}, {S::WriteMasks, 2},
+        {S::StencilAny, 3}, {S::BlendAny, 2}, {S::AlphaAny, 1}, {S::DepthAny, 2}, {S::ClearAny, 2}, {S::Accum, 1},
+        {S::CullShade, 1}, {S::Toggle, 1}, {S::Snapshot, 1}},
+       40, 30, 20, true},
   };
   return f;
 }
