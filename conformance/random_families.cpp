@@ -210,26 +210,27 @@ class FamilyGenerator {
         if (chance(30)) s_ << "glDepthMask " << (chance(70) ? "GL_TRUE" : "GL_FALSE") << "\n";
         break;
       case Step::StencilAny:
-        s_ << (chance(85) ? "glEnable" : "glDisable") << " GL_STENCIL_TEST\nglStencilFunc " << pick(funcs()) << " "
-           << uniform(-20, 300) << " " << pick(masks()) << "\nglStencilOp " << pick(stencilOps()) << " "
-           << pick(stencilOps()) << " " << pick(stencilOps()) << "\n";
+        s_ << (chance(85) ? "glEnable" : "glDisable") << " GL_STENCIL_TEST\nglStencilFunc " << pick(compareFunctionNames()) << " "
+           << uniform(-20, 300) << " " << pick(masks()) << "\nglStencilOp " << pick(stencilOperationNames()) << " "
+           << pick(stencilOperationNames()) << " " << pick(stencilOperationNames()) << "\n";
         break;
       case Step::BlendAny: {
-        static const std::vector<std::string> dst = {"GL_ZERO", "GL_ONE", "GL_SRC_COLOR", "GL_ONE_MINUS_SRC_COLOR",
-                                                     "GL_DST_COLOR", "GL_ONE_MINUS_DST_COLOR", "GL_SRC_ALPHA",
-                                                     "GL_ONE_MINUS_SRC_ALPHA", "GL_DST_ALPHA", "GL_ONE_MINUS_DST_ALPHA"};
-        std::vector<std::string> src = dst;
-        src.push_back("GL_SRC_ALPHA_SATURATE");
-        s_ << (chance(80) ? "glEnable" : "glDisable") << " GL_BLEND\nglBlendFunc " << pick(src) << " " << pick(dst)
-           << "\n";
+        // GL_SRC_ALPHA_SATURATE is a source factor only.
+        static const std::vector<std::string> src = [] {
+          std::vector<std::string> f = blendFactorNames();
+          f.push_back("GL_SRC_ALPHA_SATURATE");
+          return f;
+        }();
+        s_ << (chance(80) ? "glEnable" : "glDisable") << " GL_BLEND\nglBlendFunc " << pick(src) << " "
+           << pick(blendFactorNames()) << "\n";
         break;
       }
       case Step::AlphaAny:
-        s_ << (chance(75) ? "glEnable" : "glDisable") << " GL_ALPHA_TEST\nglAlphaFunc " << pick(funcs()) << " "
+        s_ << (chance(75) ? "glEnable" : "glDisable") << " GL_ALPHA_TEST\nglAlphaFunc " << pick(compareFunctionNames()) << " "
            << num(real(-0.2, 1.2)) << "\n";
         break;
       case Step::DepthAny:
-        s_ << (chance(85) ? "glEnable" : "glDisable") << " GL_DEPTH_TEST\nglDepthFunc " << pick(funcs()) << "\n";
+        s_ << (chance(85) ? "glEnable" : "glDisable") << " GL_DEPTH_TEST\nglDepthFunc " << pick(compareFunctionNames()) << "\n";
         break;
       case Step::ClearAny:
         if (chance(50)) s_ << "glClearColor " << nums({real(-0.2, 1.2), real(0, 1), real(0, 1), real(0, 1)}) << "\n";
@@ -243,16 +244,6 @@ class FamilyGenerator {
            << "\n";
         break;
     }
-  }
-  static const std::vector<std::string>& funcs() {
-    static const std::vector<std::string> f = {"GL_NEVER", "GL_LESS", "GL_EQUAL", "GL_LEQUAL",
-                                               "GL_GREATER", "GL_NOTEQUAL", "GL_GEQUAL", "GL_ALWAYS"};
-    return f;
-  }
-  static const std::vector<std::string>& stencilOps() {
-    static const std::vector<std::string> o = {"GL_KEEP", "GL_ZERO", "GL_REPLACE", "GL_INCR",
-                                               "GL_DECR", "GL_INVERT", "GL_INCR_WRAP", "GL_DECR_WRAP"};
-    return o;
   }
   static const std::vector<std::string>& masks() {
     static const std::vector<std::string> m = {"0xFF", "0x0F", "0xF0", "0x01", "0x80", "0x7F", "0x00", "0x3C", "0xAA"};

@@ -40,13 +40,9 @@ class Generator {
     s << "# random conformance script\n@framebuffer " << w_ << " " << h_ << "\n@profile mesa\n"
       << "glDisable GL_DITHER\nglMatrixMode GL_PROJECTION\nglOrtho 0 " << w_ << " 0 " << h_ << " -1 1\n"
       << "glMatrixMode GL_MODELVIEW\n";
-    const std::vector<std::string> funcs = {"GL_NEVER", "GL_LESS", "GL_EQUAL", "GL_LEQUAL",
-                                            "GL_GREATER", "GL_NOTEQUAL", "GL_GEQUAL", "GL_ALWAYS"};
-    const std::vector<std::string> ops = {"GL_KEEP", "GL_ZERO", "GL_REPLACE", "GL_INCR",
-                                          "GL_DECR", "GL_INVERT", "GL_INCR_WRAP", "GL_DECR_WRAP"};
-    const std::vector<std::string> factors = {"GL_ZERO", "GL_ONE", "GL_SRC_COLOR", "GL_ONE_MINUS_SRC_COLOR",
-                                              "GL_DST_COLOR", "GL_ONE_MINUS_DST_COLOR", "GL_SRC_ALPHA",
-                                              "GL_ONE_MINUS_SRC_ALPHA", "GL_DST_ALPHA", "GL_ONE_MINUS_DST_ALPHA"};
+    const std::vector<std::string>& funcs = compareFunctionNames();
+    const std::vector<std::string>& ops = stencilOperationNames();
+    const std::vector<std::string>& factors = blendFactorNames();
     const std::vector<std::string> masks = {"0xFF", "0x0F", "0xF0", "0x01", "0x80", "0x7F", "0x00", "0x3C"};
     const std::vector<std::string> bools = {"GL_TRUE", "GL_FALSE"};
     for (int i = 0; i < steps; ++i) {
@@ -122,6 +118,25 @@ class Generator {
 };
 
 }  // namespace
+
+const std::vector<std::string>& compareFunctionNames() {
+  static const std::vector<std::string> f = {"GL_NEVER", "GL_LESS", "GL_EQUAL", "GL_LEQUAL",
+                                             "GL_GREATER", "GL_NOTEQUAL", "GL_GEQUAL", "GL_ALWAYS"};
+  return f;
+}
+
+const std::vector<std::string>& stencilOperationNames() {
+  static const std::vector<std::string> o = {"GL_KEEP", "GL_ZERO", "GL_REPLACE", "GL_INCR",
+                                             "GL_DECR", "GL_INVERT", "GL_INCR_WRAP", "GL_DECR_WRAP"};
+  return o;
+}
+
+const std::vector<std::string>& blendFactorNames() {
+  static const std::vector<std::string> b = {"GL_ZERO", "GL_ONE", "GL_SRC_COLOR", "GL_ONE_MINUS_SRC_COLOR",
+                                             "GL_DST_COLOR", "GL_ONE_MINUS_DST_COLOR", "GL_SRC_ALPHA",
+                                             "GL_ONE_MINUS_SRC_ALPHA", "GL_DST_ALPHA", "GL_ONE_MINUS_DST_ALPHA"};
+  return b;
+}
 
 std::string randomConformanceScript(std::uint64_t seed, int width, int height, int steps) {
   return Generator(seed, width, height).run(steps);
