@@ -67,7 +67,13 @@ constexpr int channelShift(int c) { return std::endian::native == std::endian::l
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
 MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
   constexpr int N = FragmentSpan::kCapacity;
+  static_assert(N % 8 == 0);
   const int n = span.count;
+  // The tests and operations run over whole vectors of 8 lanes (a short span
+  // would otherwise end every loop in a scalar remainder): the span's lanes
+  // past n are defined (FragmentSpan), the buffers' cells are read into
+  // arrays zeroed first, and only the n pixels are counted and written.
+  const int lanes = (n + 7) & ~7;
   std::uint8_t* const st = &fb.stencil(span.x, span.y);
   std::uint32_t* const z = &fb.depth(span.x, span.y);
   Rgba8* const dst = &fb.color(span.x, span.y);
@@ -75,33 +81,37 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
   alignas(64) std::uint32_t alive[N];  // past the alpha test
   if constexpr (kAlpha) {
     alignas(64) std::uint32_t a8[N];
-    for (int k = 0; k < n; ++k) a8[k] = floatToUnorm8(span.alpha[k]);
+    for (int k = 0; k < lanes; ++k) a8[k] = floatToUnorm8(span.alpha[k]);
     const std::uint32_t ref = floatToUnorm8(s.alpha.ref);
-    span::compare(s.alpha.func, n, [&](int k) { return a8[k]; }, [&](int) { return ref; }, alive);
+    span::compare(s.alpha.func, lanes, [&](int k) { return a8[k]; }, [&](int) { return ref; }, alive);
   } else {
-    for (int k = 0; k < n; ++k) alive[k] = 1;
+    for (int k = 0; k < lanes; ++k) alive[k] = 1;
   }
 
   alignas(64) std::uint32_t stored[N], stencilPass[N];
   if constexpr (kStencil) {
+    std::memset(stored, 0, sizeof(stored));
     for (int k = 0; k < n; ++k) stored[k] = st[k];
     const std::uint32_t mask = s.stencil.valueMask, ref = s.stencil.ref & mask;
-    span::compare(s.stencil.func, n, [&](int) { return ref; }, [&](int k) { return stored[k] & mask; }, stencilPass);
+    span::compare(s.stencil.func, lanes, [&](int) { return ref; }, [&](int k) { return stored[k] & mask; }, stencilPass);
   } else {
-    for (int k = 0; k < n; ++k) stencilPass[k] = 1;
+    for (int k = 0; k < lanes; ++k) stencilPass[k] = 1;
   }
 
   alignas(64) std::uint32_t depthPass[N];
   if constexpr (kDepth) {
-    span::compare(s.depth.func, n, [&](int k) { return span.depth[k]; }, [&](int k) { return z[k]; }, depthPass);
+    alignas(64) std::uint32_t zStored[N];
+    std::memset(zStored, 0, sizeof(zStored));
+    for (int k = 0; k < n; ++k) zStored[k] = z[k];
+    span::compare(s.depth.func, lanes, [&](int k) { return span.depth[k]; }, [&](int k) { return zStored[k]; }, depthPass);
   } else {
-    for (int k = 0; k < n; ++k) depthPass[k] = 1;
+    for (int k = 0; k < lanes; ++k) depthPass[k] = 1;
   }
 
   alignas(64) std::uint32_t written[N];
   std::uint32_t count = 0;
-  for (int k = 0; k < n; ++k) {
-    written[k] = alive[k] & stencilPass[k] & depthPass[k];
+  for (int k = 0; k < lanes; ++k) {
+    written[k] = alive[k] & stencilPass[k] & depthPass[k] & static_cast<std::uint32_t>(k < n);
     count += written[k];
   }
 
@@ -109,14 +119,15 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
     // sfail where the stencil test failed, dpfail where the depth test did,
     // dppass where both passed; a fragment the alpha test killed leaves it.
     const std::uint32_t max = fb.profile().stencilMax(), m = s.stencil.writeMask & max, ref = s.stencil.ref;
-    alignas(64) std::uint32_t onFail[N], onDepthFail[N], onPass[N];
-    span::stencilOpValues(s.stencil.sfail, n, stored, ref, max, onFail);
-    span::stencilOpValues(s.stencil.dpfail, n, stored, ref, max, onDepthFail);
-    span::stencilOpValues(s.stencil.dppass, n, stored, ref, max, onPass);
-    for (int k = 0; k < n; ++k) {
+    alignas(64) std::uint32_t onFail[N], onDepthFail[N], onPass[N], next[N];
+    span::stencilOpValues(s.stencil.sfail, lanes, stored, ref, max, onFail);
+    span::stencilOpValues(s.stencil.dpfail, lanes, stored, ref, max, onDepthFail);
+    span::stencilOpValues(s.stencil.dppass, lanes, stored, ref, max, onPass);
+    for (int k = 0; k < lanes; ++k) {
       const std::uint32_t v = !alive[k] ? stored[k] : !stencilPass[k] ? onFail[k] : !depthPass[k] ? onDepthFail[k] : onPass[k];
-      st[k] = static_cast<std::uint8_t>((stored[k] & ~m) | (v & m));
+      next[k] = (stored[k] & ~m) | (v & m);
     }
+    for (int k = 0; k < n; ++k) st[k] = static_cast<std::uint8_t>(next[k]);
   }
   if constexpr (kDepth) {
     if (s.depth.writeMask)
@@ -124,26 +135,29 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
   }
 
   if constexpr (kColor != ColorWrites::None) {
+    // Copied word by word in loops (built with -fno-tree-loop-distribute-patterns,
+    // so they stay loops): a memcpy of n words is a library call per span.
     alignas(64) std::uint32_t src32[N], dst32[N];
-    std::memcpy(src32, span.color.data(), sizeof(Rgba8) * static_cast<std::size_t>(n));
-    std::memcpy(dst32, dst, sizeof(Rgba8) * static_cast<std::size_t>(n));
+    for (int k = 0; k < lanes; ++k) std::memcpy(&src32[k], &span.color[k], sizeof(Rgba8));
+    std::memset(dst32, 0, sizeof(dst32));
+    for (int k = 0; k < n; ++k) std::memcpy(&dst32[k], &dst[k], sizeof(Rgba8));
     if constexpr (kBlend) {
       span::Channels<N> sc, dc, out;
       for (int c = 0; c < 4; ++c)
-        for (int k = 0; k < n; ++k) {
+        for (int k = 0; k < lanes; ++k) {
           sc.c[c][k] = static_cast<std::uint16_t>((src32[k] >> channelShift(c)) & 0xFFu);
           dc.c[c][k] = static_cast<std::uint16_t>((dst32[k] >> channelShift(c)) & 0xFFu);
         }
-      span::blendChannels(s.blend, n, sc, dc, out);
-      for (int k = 0; k < n; ++k)
+      span::blendChannels(s.blend, lanes, sc, dc, out);
+      for (int k = 0; k < lanes; ++k)
         src32[k] = std::uint32_t{out.c[0][k]} << channelShift(0) | std::uint32_t{out.c[1][k]} << channelShift(1) |
                    std::uint32_t{out.c[2][k]} << channelShift(2) | std::uint32_t{out.c[3][k]} << channelShift(3);
     }
     std::uint32_t keep = 0;  // the bits of each word the colour mask writes
     for (int c = 0; c < 4; ++c)
       if (kColor == ColorWrites::All || s.colorMask[c]) keep |= 0xFFu << channelShift(c);
-    for (int k = 0; k < n; ++k) dst32[k] = written[k] ? (dst32[k] & ~keep) | (src32[k] & keep) : dst32[k];
-    std::memcpy(dst, dst32, sizeof(Rgba8) * static_cast<std::size_t>(n));
+    for (int k = 0; k < lanes; ++k) dst32[k] = written[k] ? (dst32[k] & ~keep) | (src32[k] & keep) : dst32[k];
+    for (int k = 0; k < n; ++k) std::memcpy(&dst[k], &dst32[k], sizeof(Rgba8));
   }
   return count;
 }

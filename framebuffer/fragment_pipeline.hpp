@@ -12,12 +12,15 @@ using FragmentFunction = FragmentFate (*)(const FragmentState& s, Framebuffer& f
 
 // Up to kCapacity fragments of one row at consecutive x (x, x + 1, ...), as
 // arrays: the rasterizer fills a span, the pipeline runs it in one call.
+// Every lane is defined, also those past count (zero, or a previous span's
+// values): the span functions compute over whole vectors of lanes and
+// count and write only the first `count`.
 struct FragmentSpan {
   static constexpr int kCapacity = 64;
   int x = 0, y = 0, count = 0;
-  std::array<std::uint32_t, kCapacity> depth;
-  std::array<Rgba8, kCapacity> color;
-  std::array<float, kCapacity> alpha;
+  std::array<std::uint32_t, kCapacity> depth{};
+  std::array<Rgba8, kCapacity> color{};
+  std::array<float, kCapacity> alpha{};
 };
 
 // Runs the span's fragments in order, exactly as the FragmentFunction would

@@ -37,7 +37,7 @@ struct ScriptArg {
   double number = 0.0;       // the value as a number (enums: their value)
   std::uint32_t bits = 0;    // integer and enum arguments as GL's 32-bit word
   int column = 0;
-  std::string text;          // as written
+  std::string text;          // as written (a stored script's; a streamed command's is empty)
 };
 
 struct ScriptCommand {

@@ -12,6 +12,15 @@ namespace {
 
 constexpr int kN = FragmentSpan::kCapacity;
 
+// The lanes a loop runs over where every input is defined at every lane: the
+// span's count rounded up to whole vectors of 8 (kN is a multiple), so that a
+// short span (most are a dozen pixels) runs no scalar remainder after its
+// vector loop. Lanes past the count compute values nothing reads; a
+// reduction over the span, or a loop that writes the framebuffer, keeps the
+// count.
+[[gnu::always_inline]] inline int paddedLanes(int count) { return (count + 7) & ~7; }
+static_assert(kN % 8 == 0);
+
 // floatToUnorm8 (fragment_ops.hpp) on a clamped channel, written branch-free.
 [[gnu::always_inline]] inline std::uint32_t unorm8(float c) {
   // c is in [0, 1] or NaN: NaN and 0 give 0, 1 gives 255 (255 * 1 rounds
@@ -23,13 +32,13 @@ constexpr int kN = FragmentSpan::kCapacity;
 // The depths as llvmpipe quantises them to a unorm buffer: std::clamp(z, 0,
 // 1) (NaN, -0 and below to 0, 1 and above to 1) times the float maximum, a
 // single-precision product, rounded to nearest even.
-[[gnu::always_inline]] inline void storeDepths(const float (&z)[kN], float depthMax, FragmentSpan& out) {
-  for (int k = 0; k < out.count; ++k) out.depth[k] = windowDepthToWord(z[k], depthMax);
+[[gnu::always_inline]] inline void storeDepths(const float (&z)[kN], int lanes, float depthMax, FragmentSpan& out) {
+  for (int k = 0; k < lanes; ++k) out.depth[k] = windowDepthToWord(z[k], depthMax);
 }
 
 // Fragments of a state that writes no colour carry none.
 [[gnu::always_inline]] inline void noColor(FragmentSpan& out) {
-  for (int k = 0; k < out.count; ++k) {
+  for (int k = 0; k < paddedLanes(out.count); ++k) {
     out.color[k] = Rgba8{0, 0, 0, 0};
     out.alpha[k] = 0.0f;
   }
@@ -63,7 +72,8 @@ constexpr int kN = FragmentSpan::kCapacity;
                 bytes[2][k] << (kLittle ? 16 : 8) | bytes[3][k] << (kLittle ? 24 : 0);
     out.alpha[k] = channel[3][k];
   }
-  std::memcpy(out.color.data(), packed, sizeof(Rgba8) * static_cast<std::size_t>(n));
+  // A loop, not a memcpy of n words (a library call per span; see CMakeLists.txt).
+  for (int k = 0; k < n; ++k) std::memcpy(&out.color[k], &packed[k], sizeof(Rgba8));
 }
 
 // Whether weights w0, w1, w2 (summing to `sum`, or its magnitude) are
@@ -103,7 +113,7 @@ constexpr int kN = FragmentSpan::kCapacity;
 // fragment shader interpolates them (ChannelPlanes), then finished.
 [[gnu::always_inline]] inline void llvmpipeColor(const ChannelPlanes& p, int fbHeight, const FogState* fog,
                                                  FragmentSpan& out) {
-  const int n = out.count;
+  const int n = paddedLanes(out.count);
   const int channels = fog ? 5 : 4;
   alignas(64) float channel[5][kN];
   if (p.allUniform) {
@@ -165,8 +175,10 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   const bool flat = t.flatColor && flatColorHolds(t, out);
   // Barycentric weights of the pixel centres (colour and the window map's
   // depth need them; llvmpipe's planes and a flat colour do not).
+  // llvmpipe's colour planes use none of them either.
   alignas(64) double b0[kN], b1[kN], b2[kN];
-  if (flat || (!t.color && t.depth != TriangleShading::Depth::WindowMap)) {
+  const bool exactColor = t.color && !t.llvmpipeColor && !flat;
+  if (!exactColor && t.depth != TriangleShading::Depth::WindowMap) {
   } else if (t.useSnapped) {
     for (int k = 0; k < n; ++k) {
       b0[k] = static_cast<double>(w[0] + k * stepX[0]) / t.snappedArea;
@@ -187,26 +199,30 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   // Depth: llvmpipe's plane evaluated as its fragment shader does, then
   // quantised (storeDepths).
   alignas(64) float z[kN];
+  const int lanes = paddedLanes(n);
+  int depthLanes = lanes;  // the planes below are defined at every lane
   switch (t.depth) {
     case TriangleShading::Depth::None:
-      for (int k = 0; k < n; ++k) z[k] = 0.0f;
+      for (int k = 0; k < lanes; ++k) z[k] = 0.0f;
       break;
     case TriangleShading::Depth::WindowMap:
       for (int k = 0; k < n; ++k) {
         const double q0 = b0[k] * t.mapInvQ[0], q1 = b1[k] * t.mapInvQ[1], q2 = b2[k] * t.mapInvQ[2];
         z[k] = static_cast<float>((q0 * t.mapZ[0] + q1 * t.mapZ[1] + q2 * t.mapZ[2]) / (q0 + q1 + q2));
       }
+      depthLanes = n;
       break;
     case TriangleShading::Depth::OnePlane: {
       const float yDown = static_cast<float>(t.fbHeight - 1 - out.y);
-      for (int k = 0; k < n; ++k) z[k] = LlvmpipeDepth::planeAt(t.a0, t.dzdx, t.dzdy, static_cast<float>(out.x + k), yDown);
+      for (int k = 0; k < lanes; ++k) z[k] = LlvmpipeDepth::planeAt(t.a0, t.dzdx, t.dzdy, static_cast<float>(out.x + k), yDown);
       break;
     }
     case TriangleShading::Depth::Planes:
       for (int k = 0; k < n; ++k) z[k] = t.planes->at(out.x + k, t.fbHeight - 1 - out.y);
+      depthLanes = n;
       break;
   }
-  storeDepths(z, t.depthMax, out);
+  storeDepths(z, depthLanes, t.depthMax, out);
   if (!t.color) return noColor(out);
   if (t.llvmpipeColor) return llvmpipeColor(t.channels, t.fbHeight, t.fog, out);
   // Perspective-correct: interpolate attr/w and 1/w.
@@ -214,8 +230,8 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   const int channels = t.fog ? 5 : 4;
   if (flat) {
     for (int i = 0; i < channels; ++i)
-      for (int k = 0; k < n; ++k) channel[i][k] = t.attr[0][i];
-    return finishColor(t.fog, channel, n, out);
+      for (int k = 0; k < lanes; ++k) channel[i][k] = t.attr[0][i];
+    return finishColor(t.fog, channel, lanes, out);
   }
   // Where every pixel's weights are well conditioned (wellConditioned), a
   // channel equal at the three vertices is copied, not computed: the
@@ -248,7 +264,7 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
 
 MPR_CPU_CLONES
 void shadeFanSpan(const FanShading& t, FragmentSpan& out) {
-  const int n = out.count;
+  const int n = paddedLanes(out.count);
   alignas(64) float z[kN];
   if (t.depth) {
     const float yDown = static_cast<float>(t.fbHeight - 1 - out.y);
@@ -256,7 +272,7 @@ void shadeFanSpan(const FanShading& t, FragmentSpan& out) {
   } else {
     for (int k = 0; k < n; ++k) z[k] = 0.0f;
   }
-  storeDepths(z, t.depthMax, out);
+  storeDepths(z, n, t.depthMax, out);
   if (!t.color) return noColor(out);
   llvmpipeColor(t.planes, t.fbHeight, t.fog, out);
 }

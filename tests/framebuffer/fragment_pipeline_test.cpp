@@ -5,6 +5,7 @@
 // one by one and as spans.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "framebuffer/fragment_ops.hpp"
@@ -16,6 +17,10 @@ namespace mpr {
 namespace {
 
 constexpr int kSize = 8;
+// The spans' window: rows longer than a span's capacity, so that spans of
+// every length up to it (several vectors of lanes and a part) start
+// anywhere on a row, up to its last pixel.
+constexpr int kSpanWidth = FragmentSpan::kCapacity + 9, kSpanHeight = 3;
 
 // A variant's state: bits 1, 2, 4, 8 turn the alpha test, stencil test,
 // depth test and blending on.
@@ -50,8 +55,8 @@ void randomizeTests(FragmentState& s, std::mt19937& rng) {
 // Random buffers, the same for the same seed.
 void fillRandom(Framebuffer& fb, int seed) {
   std::mt19937 rng(static_cast<unsigned>(seed));
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < fb.height(); ++y)
+    for (int x = 0; x < fb.width(); ++x) {
       fb.stencil(x, y) = static_cast<std::uint8_t>(rng() & 0xFF);
       fb.depth(x, y) = rng() & 0xFFFFFF;
       for (int c = 0; c < 4; ++c) fb.color(x, y)[c] = static_cast<std::uint8_t>(rng() & 0xFF);
@@ -100,7 +105,8 @@ TEST(FragmentPipeline, EveryVariantDoesWhatProcessFragmentDoes) {
 
 // A span runs its fragments in order on one row: the same buffers and the
 // same count of written fragments as processFragment one by one (a span
-// from every start column, of every length that fits).
+// from every start column, of every length that fits, its lanes past the
+// count random).
 TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
   std::mt19937 rng(1994);
   const std::array<std::array<bool, 4>, 3> masks = {
@@ -113,13 +119,13 @@ TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
       ++variants;
       for (int trial = 0; trial < 100; ++trial) {
         randomizeTests(s, rng);
-        Framebuffer expected(kSize, kSize, mesaProfile()), found(kSize, kSize, mesaProfile());
+        Framebuffer expected(kSpanWidth, kSpanHeight, mesaProfile()), found(kSpanWidth, kSpanHeight, mesaProfile());
         fillRandom(expected, trial);
         fillRandom(found, trial);
         FragmentSpan span;
-        span.x = static_cast<int>(rng() % kSize);
-        span.y = static_cast<int>(rng() % kSize);
-        span.count = 1 + static_cast<int>(rng() % static_cast<unsigned>(kSize - span.x));
+        span.x = static_cast<int>(rng() % kSpanWidth);
+        span.y = static_cast<int>(rng() % kSpanHeight);
+        span.count = 1 + static_cast<int>(rng() % static_cast<unsigned>(std::min(FragmentSpan::kCapacity, kSpanWidth - span.x)));
         std::uint32_t want = 0;
         for (int i = 0; i < span.count; ++i) {
           span.depth[i] = rng() & 0xFFFFFF;
@@ -128,6 +134,15 @@ TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
           span.alpha[i] = static_cast<float>(rng() % 256) / 255.0f;
           const Fragment f{span.x + i, span.y, span.depth[i], span.color[i], span.alpha[i]};
           want += processFragment(s, expected, f) == FragmentFate::Written;
+        }
+        // The lanes past the count hold whatever a previous span left there;
+        // the span functions compute on them too, and must neither count
+        // nor write them.
+        for (int i = span.count; i < FragmentSpan::kCapacity; ++i) {
+          span.depth[i] = rng() & 0xFFFFFF;
+          span.color[i] = Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                                static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())};
+          span.alpha[i] = static_cast<float>(rng() % 256) / 255.0f;
         }
         ASSERT_EQ(op(s, found, span), want) << "variant " << bits << " trial " << trial;
         ASSERT_NO_FATAL_FAILURE(expectSameBuffers(found, expected, bits, trial));
