@@ -42,6 +42,35 @@ std::uint8_t unitToUnorm8(float x) {
   return static_cast<std::uint8_t>(roundNonNegative(x * 255.0f));
 }
 
+// GL_ACCUM and GL_LOAD over the rows of r, the state's switches (which
+// operation, wrapping or saturating sums, three or four words) taken once
+// rather than per channel: a plain loop along each row's words.
+template <bool kLoad, bool kWraps, int kChannels>
+void accumulateBytes(Framebuffer& fb, const PixelRect& r, const std::array<std::int16_t, 256>& word) {
+  const int width = r.x1 - r.x0;
+  for (int y = r.y0; y < r.y1; ++y) {
+    std::int16_t* a = fb.accum(r.x0, y);
+    const Rgba8* col = &fb.color(r.x0, y);
+    for (int i = 0; i < width; ++i)
+      for (int c = 0; c < kChannels; ++c) {
+        const std::int16_t w = word[col[i][c]];
+        a[4 * i + c] = kLoad ? w : sumWord(a[4 * i + c], w, kWraps);
+      }
+  }
+}
+
+template <bool kLoad>
+void accumulateBytes(Framebuffer& fb, const PixelRect& r, const std::array<std::int16_t, 256>& word, bool wraps,
+                     int channels) {
+  if (wraps) {
+    if (channels == 4) accumulateBytes<kLoad, true, 4>(fb, r, word);
+    else accumulateBytes<kLoad, true, 3>(fb, r, word);
+  } else {
+    if (channels == 4) accumulateBytes<kLoad, false, 4>(fb, r, word);
+    else accumulateBytes<kLoad, false, 3>(fb, r, word);
+  }
+}
+
 }  // namespace
 
 std::int16_t accumClearWord(float v) {
@@ -87,15 +116,8 @@ void accumulate(Framebuffer& fb, const PixelRect& region, AccumOp op, float valu
       // then a lookup per channel.
       std::array<std::int16_t, 256> word;
       for (int v = 0; v < 256; ++v) word[v] = productWord(static_cast<float>(v) * toUnit * scale, wraps);
-      for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) {
-          std::int16_t* a = fb.accum(x, y);
-          const Rgba8& col = fb.color(x, y);
-          for (int c = 0; c < channels; ++c) {
-            const std::int16_t w = word[col[c]];
-            a[c] = op == AccumOp::Load ? w : sumWord(a[c], w, wraps);
-          }
-        }
+      if (op == AccumOp::Load) accumulateBytes<true>(fb, r, word, wraps, channels);
+      else accumulateBytes<false>(fb, r, word, wraps, channels);
       return;
     }
     case AccumOp::Return: {

@@ -72,7 +72,9 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
   // The tests and operations run over whole vectors of 8 lanes (a short span
   // would otherwise end every loop in a scalar remainder): the span's lanes
   // past n are defined (FragmentSpan), the buffers' cells are read into
-  // arrays zeroed first, and only the n pixels are counted and written.
+  // arrays whose lanes past n are zeroed (not all of it: a memset of the
+  // whole array is a `rep stos`, slower than the loops it saves), and only
+  // the n pixels are counted and written.
   const int lanes = (n + 7) & ~7;
   std::uint8_t* const st = &fb.stencil(span.x, span.y);
   std::uint32_t* const z = &fb.depth(span.x, span.y);
@@ -90,8 +92,8 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
 
   alignas(64) std::uint32_t stored[N], stencilPass[N];
   if constexpr (kStencil) {
-    std::memset(stored, 0, sizeof(stored));
     for (int k = 0; k < n; ++k) stored[k] = st[k];
+    for (int k = n; k < lanes; ++k) stored[k] = 0;
     const std::uint32_t mask = s.stencil.valueMask, ref = s.stencil.ref & mask;
     span::compare(s.stencil.func, lanes, [&](int) { return ref; }, [&](int k) { return stored[k] & mask; }, stencilPass);
   } else {
@@ -101,8 +103,8 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
   alignas(64) std::uint32_t depthPass[N];
   if constexpr (kDepth) {
     alignas(64) std::uint32_t zStored[N];
-    std::memset(zStored, 0, sizeof(zStored));
     for (int k = 0; k < n; ++k) zStored[k] = z[k];
+    for (int k = n; k < lanes; ++k) zStored[k] = 0;
     span::compare(s.depth.func, lanes, [&](int k) { return span.depth[k]; }, [&](int k) { return zStored[k]; }, depthPass);
   } else {
     for (int k = 0; k < lanes; ++k) depthPass[k] = 1;
@@ -139,8 +141,8 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
     // so they stay loops): a memcpy of n words is a library call per span.
     alignas(64) std::uint32_t src32[N], dst32[N];
     for (int k = 0; k < lanes; ++k) std::memcpy(&src32[k], &span.color[k], sizeof(Rgba8));
-    std::memset(dst32, 0, sizeof(dst32));
     for (int k = 0; k < n; ++k) std::memcpy(&dst32[k], &dst[k], sizeof(Rgba8));
+    for (int k = n; k < lanes; ++k) dst32[k] = 0;
     if constexpr (kBlend) {
       span::Channels<N> sc, dc, out;
       for (int c = 0; c < 4; ++c)

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cerrno>
 #include <cmath>
@@ -76,6 +77,28 @@ struct Token {
 
 // The line's tokens into `out` (cleared first; its capacity is kept from
 // line to line, so a long script does not allocate per line).
+// Where the token from i ends: the first ' ', '\t' or '#' at or after i, or
+// the line's end. Eight characters at a time (a byte of x ^ c is zero where
+// the character is c; the lowest byte the zero-byte test flags is always a
+// true zero), then one at a time: the scan was a quarter of the line loop.
+std::size_t tokenEnd(std::string_view line, std::size_t i) {
+  constexpr std::uint64_t kOnes = 0x0101010101010101ULL, kHighs = 0x8080808080808080ULL;
+  const auto zeroBytes = [](std::uint64_t x) { return (x - kOnes) & ~x & kHighs; };
+  static_assert(std::endian::native == std::endian::little || std::endian::native == std::endian::big);
+  for (; i + 8 <= line.size(); i += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, line.data() + i, 8);
+    const std::uint64_t found = zeroBytes(w ^ (kOnes * ' ')) | zeroBytes(w ^ (kOnes * '\t')) | zeroBytes(w ^ (kOnes * '#'));
+    if (found) {
+      // The first character in memory is the lowest byte on a little-endian machine.
+      if constexpr (std::endian::native == std::endian::little) return i + static_cast<std::size_t>(std::countr_zero(found)) / 8;
+      break;  // big-endian: the lowest flagged byte is the last in memory; go one at a time
+    }
+  }
+  while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') ++i;
+  return i;
+}
+
 void tokenize(std::string_view line, std::vector<Token>& out) {
   out.clear();
   size_t i = 0;
@@ -83,7 +106,7 @@ void tokenize(std::string_view line, std::vector<Token>& out) {
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
     if (i >= line.size() || line[i] == '#') break;
     const size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') ++i;
+    i = tokenEnd(line, i);
     out.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
   }
 }

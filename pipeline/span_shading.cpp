@@ -14,7 +14,7 @@ constexpr int kN = FragmentSpan::kCapacity;
 
 // The lanes a loop runs over where every input is defined at every lane: the
 // span's count rounded up to whole vectors of 8 (kN is a multiple), so that a
-// short span (most are a dozen pixels) runs no scalar remainder after its
+// short span (a small triangle's rows are a few pixels) runs no scalar remainder after its
 // vector loop. Lanes past the count compute values nothing reads; a
 // reduction over the span, or a loop that writes the framebuffer, keeps the
 // count.
@@ -175,7 +175,6 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   const bool flat = t.flatColor && flatColorHolds(t, out);
   // Barycentric weights of the pixel centres (colour and the window map's
   // depth need them; llvmpipe's planes and a flat colour do not).
-  // llvmpipe's colour planes use none of them either.
   alignas(64) double b0[kN], b1[kN], b2[kN];
   const bool exactColor = t.color && !t.llvmpipeColor && !flat;
   if (!exactColor && t.depth != TriangleShading::Depth::WindowMap) {
