@@ -67,15 +67,13 @@ constexpr int channelShift(int c) { return std::endian::native == std::endian::l
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
 MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
   constexpr int N = FragmentSpan::kCapacity;
-  static_assert(N % 8 == 0);
   const int n = span.count;
-  // The tests and operations run over whole vectors of 8 lanes (a short span
-  // would otherwise end every loop in a scalar remainder): the span's lanes
-  // past n are defined (FragmentSpan), the buffers' cells are read into
-  // arrays whose lanes past n are zeroed (not all of it: a memset of the
-  // whole array is a `rep stos`, slower than the loops it saves), and only
-  // the n pixels are counted and written.
-  const int lanes = (n + 7) & ~7;
+  // The tests and operations run over whole vectors of lanes (paddedLanes):
+  // the span's lanes past n are defined (FragmentSpan), the buffers' cells
+  // are read into arrays whose lanes past n are zeroed (not all of it: a
+  // memset of the whole array is a `rep stos`, slower than the loops it
+  // saves), and only the n pixels are counted and written.
+  const int lanes = paddedLanes(n);
   std::uint8_t* const st = &fb.stencil(span.x, span.y);
   std::uint32_t* const z = &fb.depth(span.x, span.y);
   Rgba8* const dst = &fb.color(span.x, span.y);

@@ -23,6 +23,12 @@ struct FragmentSpan {
   std::array<float, kCapacity> alpha{};
 };
 
+// The lanes the span loops run over for a span of `count`: the count rounded
+// up to whole vectors of 8 (a short span would otherwise end each loop in a
+// scalar remainder), never past the capacity.
+constexpr int paddedLanes(int count) { return (count + 7) & ~7; }
+static_assert(FragmentSpan::kCapacity % 8 == 0);
+
 // Runs the span's fragments in order, exactly as the FragmentFunction would
 // one by one; returns how many were written.
 using SpanFunction = std::uint32_t (*)(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span);

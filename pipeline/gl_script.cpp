@@ -75,8 +75,6 @@ struct Token {
   int column;  // 1-based
 };
 
-// The line's tokens into `out` (cleared first; its capacity is kept from
-// line to line, so a long script does not allocate per line).
 // Where the token from i ends: the first ' ', '\t' or '#' at or after i, or
 // the line's end. Eight characters at a time (a byte of x ^ c is zero where
 // the character is c; the lowest byte the zero-byte test flags is always a
@@ -84,7 +82,6 @@ struct Token {
 std::size_t tokenEnd(std::string_view line, std::size_t i) {
   constexpr std::uint64_t kOnes = 0x0101010101010101ULL, kHighs = 0x8080808080808080ULL;
   const auto zeroBytes = [](std::uint64_t x) { return (x - kOnes) & ~x & kHighs; };
-  static_assert(std::endian::native == std::endian::little || std::endian::native == std::endian::big);
   for (; i + 8 <= line.size(); i += 8) {
     std::uint64_t w;
     std::memcpy(&w, line.data() + i, 8);
@@ -99,6 +96,8 @@ std::size_t tokenEnd(std::string_view line, std::size_t i) {
   return i;
 }
 
+// The line's tokens into `out` (cleared first; its capacity is kept from
+// line to line, so a long script does not allocate per line).
 void tokenize(std::string_view line, std::vector<Token>& out) {
   out.clear();
   size_t i = 0;

@@ -12,14 +12,10 @@ namespace {
 
 constexpr int kN = FragmentSpan::kCapacity;
 
-// The lanes a loop runs over where every input is defined at every lane: the
-// span's count rounded up to whole vectors of 8 (kN is a multiple), so that a
-// short span (a small triangle's rows are a few pixels) runs no scalar remainder after its
-// vector loop. Lanes past the count compute values nothing reads; a
-// reduction over the span, or a loop that writes the framebuffer, keeps the
-// count.
-[[gnu::always_inline]] inline int paddedLanes(int count) { return (count + 7) & ~7; }
-static_assert(kN % 8 == 0);
+// Loops whose inputs are defined at every lane run over paddedLanes
+// (fragment_pipeline.hpp); lanes past the count compute values nothing
+// reads. A reduction over the span, or a loop on planes valid only within
+// it, keeps the count.
 
 // floatToUnorm8 (fragment_ops.hpp) on a clamped channel, written branch-free.
 [[gnu::always_inline]] inline std::uint32_t unorm8(float c) {

@@ -126,23 +126,19 @@ TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
         span.x = static_cast<int>(rng() % kSpanWidth);
         span.y = static_cast<int>(rng() % kSpanHeight);
         span.count = 1 + static_cast<int>(rng() % static_cast<unsigned>(std::min(FragmentSpan::kCapacity, kSpanWidth - span.x)));
+        // Every lane random: those past the count stand for whatever a
+        // previous span left there; the span functions compute on them too,
+        // and must neither count nor write them.
+        for (int i = 0; i < FragmentSpan::kCapacity; ++i) {
+          span.depth[i] = rng() & 0xFFFFFF;
+          span.color[i] = Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                                static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())};
+          span.alpha[i] = static_cast<float>(rng() % 256) / 255.0f;
+        }
         std::uint32_t want = 0;
         for (int i = 0; i < span.count; ++i) {
-          span.depth[i] = rng() & 0xFFFFFF;
-          span.color[i] = Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
-                                static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())};
-          span.alpha[i] = static_cast<float>(rng() % 256) / 255.0f;
           const Fragment f{span.x + i, span.y, span.depth[i], span.color[i], span.alpha[i]};
           want += processFragment(s, expected, f) == FragmentFate::Written;
-        }
-        // The lanes past the count hold whatever a previous span left there;
-        // the span functions compute on them too, and must neither count
-        // nor write them.
-        for (int i = span.count; i < FragmentSpan::kCapacity; ++i) {
-          span.depth[i] = rng() & 0xFFFFFF;
-          span.color[i] = Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
-                                static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())};
-          span.alpha[i] = static_cast<float>(rng() % 256) / 255.0f;
         }
         ASSERT_EQ(op(s, found, span), want) << "variant " << bits << " trial " << trial;
         ASSERT_NO_FATAL_FAILURE(expectSameBuffers(found, expected, bits, trial));
