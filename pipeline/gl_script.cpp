@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <charconv>
 #include <cerrno>
 #include <cmath>
@@ -22,6 +21,7 @@
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl_enums.hpp"
+#include "pipeline/script_line.hpp"
 #include "util/spelling.hpp"
 
 namespace mpr {
@@ -49,6 +49,20 @@ const CallSpec* findCall(std::string_view name) {
   return it == byName.end() ? nullptr : it->second;
 }
 
+// a == b for a call's name: names of 8 to 16 characters (most calls) compare
+// as two 8-byte words each, the first 8 characters and the last 8, instead
+// of a call to memcmp for every line.
+bool sameName(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  if (a.size() < 8 || a.size() > 16) return a == b;
+  std::uint64_t a0, a1, b0, b1;
+  std::memcpy(&a0, a.data(), 8);
+  std::memcpy(&b0, b.data(), 8);
+  std::memcpy(&a1, a.data() + a.size() - 8, 8);
+  std::memcpy(&b1, b.data() + b.size() - 8, 8);
+  return ((a0 ^ b0) | (a1 ^ b1)) == 0;
+}
+
 // Capabilities and modes that GL accepts but the emulated Iris subset does not
 // implement: a script using them is outside the call set (a script error),
 // not a GL error, since real GL would act on them.
@@ -70,45 +84,7 @@ std::string closestCallName(std::string_view name) {
   return closestMatch(name, names, 4, true);
 }
 
-struct Token {
-  std::string_view text;
-  int column;  // 1-based
-};
-
-// Where the token from i ends: the first ' ', '\t' or '#' at or after i, or
-// the line's end. Eight characters at a time (a byte of x ^ c is zero where
-// the character is c; the lowest byte the zero-byte test flags is always a
-// true zero), then one at a time: the scan was a quarter of the line loop.
-std::size_t tokenEnd(std::string_view line, std::size_t i) {
-  constexpr std::uint64_t kOnes = 0x0101010101010101ULL, kHighs = 0x8080808080808080ULL;
-  const auto zeroBytes = [](std::uint64_t x) { return (x - kOnes) & ~x & kHighs; };
-  for (; i + 8 <= line.size(); i += 8) {
-    std::uint64_t w;
-    std::memcpy(&w, line.data() + i, 8);
-    const std::uint64_t found = zeroBytes(w ^ (kOnes * ' ')) | zeroBytes(w ^ (kOnes * '\t')) | zeroBytes(w ^ (kOnes * '#'));
-    if (found) {
-      // The first character in memory is the lowest byte on a little-endian machine.
-      if constexpr (std::endian::native == std::endian::little) return i + static_cast<std::size_t>(std::countr_zero(found)) / 8;
-      break;  // big-endian: the lowest flagged byte is the last in memory; go one at a time
-    }
-  }
-  while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') ++i;
-  return i;
-}
-
-// The line's tokens into `out` (cleared first; its capacity is kept from
-// line to line, so a long script does not allocate per line).
-void tokenize(std::string_view line, std::vector<Token>& out) {
-  out.clear();
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    if (i >= line.size() || line[i] == '#') break;
-    const size_t start = i;
-    i = tokenEnd(line, i);
-    out.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
-  }
-}
+using Token = ScriptToken;
 
 // A plain decimal, [-]digits[.digits][(e|E)[+|-]digits] with at most 15
 // significant digits written, read the way from_chars reads it but without
@@ -217,18 +193,23 @@ class Parser {
     return v;
   }
 
-  ScriptArg parseArg(char kind, const Token& tok, int line, std::string_view callName, int index) const {
+  // Parses `tok` into `a`, every field written: a call line's arguments are
+  // parsed into the ones the line before left (their count kept), not built,
+  // moved and destroyed an argument at a time (a fifth of the line loop).
+  void parseArg(char kind, const Token& tok, int line, std::string_view callName, int index, ScriptArg& a) const {
     // A primitive mode parses as an enum, an enum-or-integer as an integer
     // (the distinction only names values when a trace is written).
     if (kind == 'p') kind = 'e';
     if (kind == 'n') kind = 'i';
-    ScriptArg a;
+    a.number = 0.0;
+    a.bits = 0;
     a.column = tok.column;
     // The text as written, kept with a stored command only (a checking pass
     // keeps none; a streamed command is executed, and nothing executing it
     // reads the text: a string per argument, 7 % of reading a trace);
     // messages quote the token itself.
-    if (mode_ == Mode::Store) a.text = std::string(tok.text);
+    if (mode_ == Mode::Store) a.text.assign(tok.text);
+    else a.text.clear();
     const std::string_view text = tok.text;
     // Built only for a message: an argument that parses costs no string.
     const auto where = [&] { return "argument " + std::to_string(index + 1) + " of " + std::string(callName); };
@@ -241,7 +222,7 @@ class Parser {
       if (kind == 'u') fail(line, tok.column, where() + " is an unsigned byte (0..255), not " + std::string(text));
       a.bits = *v;
       a.number = *v;
-      return a;
+      return;
     }
     switch (kind) {
       case 'e':
@@ -269,7 +250,7 @@ class Parser {
         }
         a.bits = bits;
         a.number = bits;
-        return a;
+        return;
       }
       case 'i':
       case 'u':
@@ -284,14 +265,14 @@ class Parser {
           fail(line, tok.column, where() + ": " + std::string(text) + " does not fit in 32 bits");
         a.bits = static_cast<std::uint32_t>(*n);
         a.number = static_cast<double>(*n);
-        return a;
+        return;
       }
       default: {  // f, m, v
-        if (plainShortDecimal(tok.text, a.number)) return a;
+        if (plainShortDecimal(tok.text, a.number)) return;
         const auto v = parseNumber(tok.text);
         if (!v) fail(line, tok.column, where() + " is a number: expected a C literal, got '" + std::string(text) + "'");
         a.number = *v;
-        return a;
+        return;
       }
     }
   }
@@ -312,16 +293,13 @@ class Parser {
     int lineNo = 0;
     size_t pos = 0;
     while (pos <= text.size()) {
-      size_t eol = text.find('\n', pos);
-      if (eol == std::string_view::npos) eol = text.size();
-      std::string_view line = text.substr(pos, eol - pos);
-      pos = eol + 1;
+      const ScriptLine cut = nextScriptLine(text, pos, tokens_);
+      const std::string_view line = cut.text;
+      pos = cut.next;
       ++lineNo;
-      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      tokenize(line, tokens_);
       const std::vector<Token>& toks = tokens_;
       if (toks.empty()) {
-        if (eol == text.size()) break;
+        if (cut.last) break;
         continue;
       }
       const Token& head = toks[0];
@@ -427,8 +405,9 @@ class Parser {
           }
           if (toks.size() != 10)
             fail(lineNo, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
+          cmd.args.resize(9);
           for (std::size_t t = 1; t < toks.size(); ++t)
-            cmd.args.push_back(parseArg('f', toks[t], lineNo, "@window_map", static_cast<int>(t - 1)));
+            parseArg('f', toks[t], lineNo, "@window_map", static_cast<int>(t - 1), cmd.args[t - 1]);
           emit(script, std::move(cmd));
           continue;
         }
@@ -453,7 +432,7 @@ class Parser {
       // few are tried before the table.
       const CallSpec* spec = nullptr;
       for (const CallSpec* recent : recentCalls_)
-        if (recent && recent->name == head.text) spec = recent;
+        if (recent && sameName(recent->name, head.text)) spec = recent;
       if (!spec && (spec = findCall(head.text)))
         recentCalls_[nextRecent_++ % recentCalls_.size()] = spec;
       if (!spec) {
@@ -466,7 +445,6 @@ class Parser {
       // its capacity unless a sink moved it away (a parser that stores).
       ScriptCommand& cmd = callCommand_;
       cmd.kind = ScriptCommand::Kind::Call;
-      cmd.args.clear();
       cmd.label.clear();
       cmd.probe.reset();
       cmd.line = lineNo;
@@ -486,22 +464,24 @@ class Parser {
       if (variadic && given < fixed + 1)
         fail(lineNo, endColumn, std::string(spec->name) + " takes " + std::to_string(fixed) +
                                     " argument(s) and then its values, got " + std::to_string(given) + " argument(s)");
+      // Token t is argument t - 1: every token is one once the counts hold.
+      cmd.args.resize(given);
       size_t t = 1;
       for (size_t k = 0; k < kinds.size(); ++k) {
         const char kind = kinds[k];
         if (kind == 'm') {
-          for (int j = 0; j < 16; ++j, ++t) cmd.args.push_back(parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
+          for (int j = 0; j < 16; ++j, ++t) parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
         } else if (kind == 'v') {
-          const int want = glVectorCount(spec->call, cmd.args.back().bits);
+          const int want = glVectorCount(spec->call, cmd.args[t - 2].bits);
           const size_t have = toks.size() - t;
           if (want > 0 && have != static_cast<size_t>(want))
             fail(lineNo, have > static_cast<size_t>(want) ? toks[t + want].column : endColumn,
                  std::string(spec->name) + " " + std::string(toks[t - 1].text) + " takes " + std::to_string(want) +
                      " value" + (want == 1 ? "" : "s") + ", got " + std::to_string(have));
           if (want == 0 && have > 4) fail(lineNo, toks[t + 4].column, std::string(spec->name) + " takes at most 4 values");
-          for (; t < toks.size(); ++t) cmd.args.push_back(parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
+          for (; t < toks.size(); ++t) parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
         } else {
-          cmd.args.push_back(parseArg(kind, toks[t], lineNo, spec->name, static_cast<int>(t - 1)));
+          parseArg(kind, toks[t], lineNo, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
           ++t;
         }
       }
@@ -636,7 +616,8 @@ class Parser {
                                      (tok.text[0] == '@' ? " (is @end missing?)" : ""));
       }
       row.push_back(v);
-      text += (text.empty() ? "" : " ") + std::string(tok.text);
+      if (!text.empty()) text += ' ';
+      text += tok.text;
     }
     if (!p.cells.empty() && row.size() != p.cells[0].size())
       fail(line, toks[0].column, "picture row has " + std::to_string(row.size()) + " cells, the first row has " +

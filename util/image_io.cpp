@@ -2,12 +2,16 @@
 
 #include <dlfcn.h>
 
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
 
 #include "util/image_io_table.hpp"
+#include "util/png_writer.hpp"
 
 namespace mpr {
 namespace {
@@ -76,10 +80,22 @@ void check(const std::string& error, const std::string& what) {
   if (!error.empty()) throw std::runtime_error(what + ": " + error);
 }
 
+void writeBytes(const std::string& formatPath, const std::string& filePath, const std::string& bytes) {
+  std::FILE* f = std::fopen(filePath.c_str(), "wb");
+  if (!f) throw std::runtime_error("cannot write " + formatPath + ": " + std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size() && std::fflush(f) == 0;
+  const int writeErrno = errno;
+  if (std::fclose(f) != 0 || !written)
+    throw std::runtime_error("cannot write " + formatPath + ": " + std::strerror(written ? errno : writeErrno));
+}
+
 }  // namespace
 
 void writeImageFile(const std::string& formatPath, const std::string& filePath, int width, int height, int channels,
                     const std::uint8_t* top, std::ptrdiff_t rowStride) {
+  // An RGB PNG, the image every render writes, without the module.
+  if (channels == 3 && namesPngFile(formatPath))
+    return writeBytes(formatPath, filePath, encodeRgbPng(width, height, top, rowStride));
   check(module().write(formatPath, filePath, width, height, channels, false, top, rowStride), "cannot write " + formatPath);
 }
 

@@ -27,6 +27,8 @@ struct DecodedImage {
   std::vector<float> floats;
 };
 
+// An 8-bit RGB PNG is written by util/png_writer (libpng, the same bytes)
+// without loading the module.
 // Writes width x height pixels of `channels` values, the first row (the
 // image's top) at `top`, each next row `rowStride` values on (negative for
 // rows stored bottom-up), to `filePath` in the format `formatPath`'s
@@ -36,7 +38,9 @@ void writeImageFile(const std::string& formatPath, const std::string& filePath, 
 void writeImageFile(const std::string& formatPath, const std::string& filePath, int width, int height, int channels,
                     const float* top, std::ptrdiff_t rowStride);
 
-// The bytes of a PNG file of 8-bit pixels (rows as writeImageFile).
+// The bytes of a PNG file of 8-bit pixels (rows as writeImageFile), always
+// encoded by the module (tests/util/png_writer_test.cpp holds util/png_writer
+// to these bytes).
 std::string encodePngBytes(int width, int height, int channels, const std::uint8_t* top, std::ptrdiff_t rowStride);
 
 DecodedImage readImageFile(const std::string& path);

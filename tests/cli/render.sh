@@ -17,13 +17,16 @@ for ext in tif exr; do
   "$MPR" render --width 16 --height 12 -o "$WORK/x.$ext" 2>/dev/null && [[ -s "$WORK/x.$ext" ]] || fail "no .$ext output"
 done
 "$MPR" render --width 16 --height 12 -o "$WORK/x.bmp" 2>/dev/null; [[ $? -eq 2 ]] || fail ".bmp should be refused"
-# Images go through the image module, opened on first use (util/image_io):
-# without it an image fails with the reason and nothing is written, and a
-# run that writes no image does not need it.
-out="$(MPR_IMAGE_IO=/nonexistent "$MPR" render --width 16 --height 12 -o "$WORK/nomodule.png" 2>&1)"; rc=$?
+# Images other than RGB PNGs go through the image module, opened on first
+# use (util/image_io): without it such an image fails with the reason and
+# nothing is written; a PNG (util/png_writer, libpng) and a run that writes
+# no image do not need it.
+out="$(MPR_IMAGE_IO=/nonexistent "$MPR" render --width 16 --height 12 -o "$WORK/nomodule.tif" 2>&1)"; rc=$?
 [[ $rc -eq 1 && "$out" == *"cannot load the image module libmpr_image_io.so"*"set MPR_IMAGE_IO"* ]] ||
   fail "without the image module: status $rc, $out"
-[[ ! -e "$WORK/nomodule.png" ]] || fail "without the image module an image was written"
+[[ ! -e "$WORK/nomodule.tif" ]] || fail "without the image module an image was written"
+MPR_IMAGE_IO=/nonexistent "$MPR" render --width 16 --height 12 -o "$WORK/nomodule.png" 2>/dev/null &&
+  [[ -s "$WORK/nomodule.png" ]] || fail "a PNG render needed the image module"
 printf 'glClear GL_COLOR_BUFFER_BIT\n' > "$WORK/clear.gls"
 MPR_IMAGE_IO=/nonexistent "$MPR" gl "$WORK/clear.gls" -q || fail "mpr gl without images needed the image module"
 # A bad scene: status 2, the message located, the old output untouched, no new output.

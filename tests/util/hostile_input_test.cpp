@@ -35,6 +35,30 @@ TEST(InputFile, RefusesFoldersDevicesFifosAndOversizedFiles) {
   fs::remove_all(d);
 }
 
+TEST(InputFile, ReadsWhatTheFileHoldsWhateverStatSays) {
+  char t[] = "/tmp/mpr-input-XXXXXX";
+  const fs::path d = mkdtemp(t);
+  // Larger than a read chunk, bytes of every value, not a multiple of 4096.
+  std::string big(200003, '\0');
+  for (std::size_t i = 0; i < big.size(); ++i) big[i] = static_cast<char>(i * 7919 % 251);
+  std::ofstream(d / "big", std::ios::binary) << big;
+  EXPECT_EQ(readInputFile((d / "big").string(), big.size(), "the file"), big);
+  std::ofstream(d / "empty").close();
+  EXPECT_EQ(readInputFile((d / "empty").string(), 10, "the file"), "");
+  // A regular file whose size stat gives as 0 (procfs) is read to its end.
+  const std::string status = readInputFile("/proc/self/status", 1 << 20, "the file");
+  EXPECT_NE(status.find("Name:"), std::string::npos);
+  EXPECT_EQ(status.find('\0'), std::string::npos);
+  // Past the limit while read (stat said 0): refused, not cut short.
+  try {
+    readInputFile("/proc/self/status", 10, "the file");
+    ADD_FAILURE() << "read past the limit";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "cannot read the file: it grew past the 10 bytes MPR reads");
+  }
+  fs::remove_all(d);
+}
+
 TEST(Spelling, BoundedSuggestionsMatchTheFullDistance) {
   const std::vector<std::string_view> names = {"glBegin", "glEnd", "glVertex3f", "glColor3f", "glClear"};
   EXPECT_EQ(closestMatch("glBgin", names, 3), "glBegin");
