@@ -14,6 +14,7 @@
 #include "pipeline/gl_context.hpp"
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/gl_script.hpp"
+#include "pipeline/script_check_thread.hpp"
 #include "pipeline/script_read_ahead.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "framebuffer/script_probe.hpp"
@@ -31,27 +32,46 @@ struct GlOptions {
 };
 
 int runGl(const GlOptions& o) {
-  // The script runs as it is read (streamScript): a first pass finds every
-  // script error before anything runs or is written, and no parsed copy of
-  // the whole script is held.
+  // The script runs as it is read (streamScript): a check of the whole
+  // script finds every script error before anything is printed or written,
+  // and no parsed copy of the whole script is held. With one thread the
+  // check comes first; with more it runs on a thread of its own beside the
+  // run (ScriptCheckThread), which starts from the header and holds back
+  // every message and file until the check has passed.
   std::string text;
   Script script;
+  std::unique_ptr<ScriptCheckThread> check;
   try {
     text = readScriptText(o.script);
-    script = checkScript(text, o.script);
+    if (o.threads > 1) {
+      script = scanScriptHeader(text, o.script);
+      check = std::make_unique<ScriptCheckThread>(text, o.script);
+    } else {
+      script = checkScript(text, o.script);
+    }
   } catch (const ScriptError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   }
+  // A script error goes before any other message: true when there is one
+  // (printed), waiting for the check if it runs beside.
+  const auto reportScriptError = [&] {
+    if (!check) return false;
+    const std::optional<std::string>& error = check->wait();
+    if (error) std::cerr << *error << "\n";
+    return error.has_value();
+  };
   std::string profileName = o.profile.empty() ? script.profile.value_or("indigo") : o.profile;
   const auto profile = findProfile(profileName);
   if (!profile) {
+    if (reportScriptError()) return 2;
     std::cerr << "mpr gl: unknown profile '" << profileName << "' (known: indigo, mesa)\n";
     return 2;
   }
   OutputSet outputs("gl");
   if (o.dumpGiven) outputs.addFolder("--dump", o.dumpDir);
   if (const std::string problem = outputs.problem(); !problem.empty()) {
+    if (reportScriptError()) return 2;
     std::cerr << problem << "\n";
     return 2;
   }
@@ -59,10 +79,21 @@ int runGl(const GlOptions& o) {
   try {
     gl = std::make_unique<GLContext>(script.width, script.height, *profile);
   } catch (const FramebufferSizeError& e) {
+    if (reportScriptError()) return 2;
     std::cerr << o.script << ": " << e.what() << "\n";
     return 2;
   }
   gl->setThreads(o.threads);
+
+  // GL error reports met before the check has passed are held back, then
+  // printed in order; after it, printed as they come.
+  std::string heldReports;
+  bool checked = !check;
+  const auto releaseReports = [&] {
+    std::cerr << heldReports;
+    heldReports.clear();
+    checked = true;
+  };
 
   // Snapshots are kept in memory and written with the final dumps, so an
   // interrupted run leaves no partial set behind.
@@ -71,7 +102,10 @@ int runGl(const GlOptions& o) {
   ScriptHooks hooks;
   hooks.onPass = [&](const ScriptCommand&) { ++passes; };
   hooks.onGLError = [&](const ScriptCommand& c, std::uint32_t e) {
-    std::cerr << script.file << ":" << glErrorReport(c, e) << "\n";
+    if (!checked && check->passed()) releaseReports();
+    const std::string report = script.file + ":" + glErrorReport(c, e) + "\n";
+    if (checked) std::cerr << report;
+    else heldReports += report;
   };
   if (o.dumpGiven)
     hooks.onSnapshot = [&](const ScriptCommand& c, const GLContext& ctx) {
@@ -80,18 +114,21 @@ int runGl(const GlOptions& o) {
     };
   // A probe that does not hold ends the run (exit status 1, nothing written).
   struct ProbeFailed {};
+  std::string probeReport;
   std::size_t probes = 0;
   hooks.onProbe = [&](const ScriptCommand& c, const GLContext& ctx) {
     ++probes;
     const ProbeOutcome p = evaluateProbe(*c.probe, ctx.framebuffer());
     if (p.passed) return;
-    std::cerr << script.file << ":" << c.line << ": " << c.label << ": " << p.message << "\n";
+    probeReport = script.file + ":" + std::to_string(c.line) + ": " + c.label + ": " + p.message + "\n";
     throw ProbeFailed{};
   };
+  struct CheckFailed {};  // the check beside found an error: the run stops
   std::size_t errors = 0, calls = 0;
   try {
     ScriptExecutor executor(*gl, hooks);
     const auto run = [&](ScriptCommand&& c) {
+      if (!checked && check->failed()) throw CheckFailed{};
       if (c.kind == ScriptCommand::Kind::Call) ++calls;
       executor.execute(c);
     };
@@ -99,9 +136,22 @@ int runGl(const GlOptions& o) {
     // while the calls run (the same commands in the same order).
     if (o.threads > 1) streamScriptAhead(text, script, run);
     else streamScript(text, script, run);
+    if (reportScriptError()) return 2;
+    releaseReports();
     errors = executor.finish();
   } catch (const ProbeFailed&) {
+    if (reportScriptError()) return 2;
+    releaseReports();
+    std::cerr << probeReport;
     return 1;
+  } catch (const CheckFailed&) {
+    reportScriptError();
+    return 2;
+  } catch (const ScriptError& e) {
+    // Met by the stream only when the check runs beside: the check reports
+    // the script's first error, this one or one before it.
+    if (!reportScriptError()) std::cerr << e.what() << "\n";
+    return 2;
   }
 
   if (o.dumpGiven) {

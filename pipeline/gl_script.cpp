@@ -144,8 +144,9 @@ class Parser {
   // How parse hands commands on: Store keeps them in the Script; Check keeps
   // none (a first pass that finds every error); Stream hands each to the
   // sink as soon as it is complete, probes placed in the window `streamSize`
-  // that the Check pass found.
-  enum class Mode { Store, Check, Stream };
+  // that the Check pass found; Header checks as Check does up to the first
+  // call and returns there (the window and profile, which come before it).
+  enum class Mode { Store, Check, Stream, Header };
   using Sink = std::function<void(ScriptCommand&&)>;
 
   Parser(const std::string& file) : file_(file) {}
@@ -428,6 +429,7 @@ class Parser {
                                       "@count_fragments, @expect, @expect-picture)");
       }
 
+      if (mode_ == Mode::Header) return script;
       // A script repeats a few calls (glNormal3f, glVertex3f, ...): the last
       // few are tried before the table.
       const CallSpec* spec = nullptr;
@@ -749,6 +751,10 @@ Script parseScript(std::string_view text, const std::string& file) { return Pars
 
 Script checkScript(std::string_view text, const std::string& file) {
   return Parser(file, Parser::Mode::Check).parse(text);
+}
+
+Script scanScriptHeader(std::string_view text, const std::string& file) {
+  return Parser(file, Parser::Mode::Header).parse(text);
 }
 
 void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {

@@ -81,6 +81,14 @@ std::string readScriptText(const std::string& path);
 // The commands and their order are parseScript's; memory does not grow with
 // the script's length.
 Script checkScript(std::string_view text, const std::string& file);
+// The header checkScript's Script holds (file, size, profile), from the
+// lines before the first call, where @framebuffer and @profile must stand:
+// those lines are checked as checkScript checks them, so an error thrown
+// here is the script's first error, the one checkScript throws (a script
+// without a call is checked whole). What
+// streamScript needs to start before the whole script is checked
+// (pipeline/script_check_thread).
+Script scanScriptHeader(std::string_view text, const std::string& file);
 void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
 
 }  // namespace mpr

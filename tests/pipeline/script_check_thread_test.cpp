@@ -1,0 +1,109 @@
+// What `mpr gl` with more than one thread starts from instead of a whole
+// check: scanScriptHeader gives checkScript's header on every script of the
+// repository, and throws checkScript's error where the first error stands
+// before the first call (and nothing where it stands after);
+// ScriptCheckThread reports checkScript's error, or none, whenever it is
+// waited for.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "pipeline/gl_script.hpp"
+#include "pipeline/script_check_thread.hpp"
+
+namespace mpr {
+namespace {
+
+std::string checkError(const std::string& text) {
+  try {
+    checkScript(text, "s.gls");
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string headerError(const std::string& text) {
+  try {
+    scanScriptHeader(text, "s.gls");
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScriptHeader, IsCheckScriptsHeaderOnEveryScriptOfTheRepository) {
+  const std::filesystem::path root(MPR_SOURCE_DIR);
+  int scripts = 0, sized = 0, profiled = 0;
+  for (const char* folder : {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "tests/probes/fail",
+                             "scenes"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+      if (entry.path().extension() != ".gls") continue;
+      const std::string path = entry.path().string();
+      const std::string text = readScriptText(path);
+      const Script checked = checkScript(text, path);
+      const Script header = scanScriptHeader(text, path);
+      EXPECT_EQ(header.file, checked.file) << path;
+      EXPECT_EQ(header.width, checked.width) << path;
+      EXPECT_EQ(header.height, checked.height) << path;
+      EXPECT_EQ(header.profile, checked.profile) << path;
+      EXPECT_TRUE(header.commands.empty()) << path;
+      sized += header.width != 256 || header.height != 256;
+      profiled += header.profile.has_value();
+      ++scripts;
+    }
+  EXPECT_GT(scripts, 50);
+  EXPECT_GT(sized, 10);
+  EXPECT_GT(profiled, 10);
+}
+
+TEST(ScriptHeader, ThrowsCheckScriptsErrorOnlyBeforeTheFirstCall) {
+  // The first error before the first call, in directives of every kind.
+  for (const std::string text : {"@framebuffer 8\nglFinish\n", "@profile nope\n", "@framebuffer 8 8\n@pass\n",
+                                 "@snapshot a\n@snapshot a\nglFinish\n", "@framebuffer 8 8\n@framebuffer 8 8\n",
+                                 "@expect stencil 1\n", "@end\nglFinish\n", "@framebuffer 70000 8\n"}) {
+    const std::string expected = checkError(text);
+    EXPECT_FALSE(expected.empty()) << text;
+    EXPECT_EQ(headerError(text), expected) << text;
+  }
+  // An error at or after the first call is not the header's; neither is a
+  // probe outside the window, known only once the whole script is read.
+  for (const std::string text : {"@framebuffer 8 8\nglFinsh\n", "glFinish\n@framebuffer 8 8\n",
+                                 "@framebuffer 8 8\nglFinish\nglStencilFunc GL_LESS 1\n",
+                                 "@expect stencil 300 0 1\nglFinish\n"}) {
+    EXPECT_FALSE(checkError(text).empty()) << text;
+    EXPECT_EQ(headerError(text), "") << text;
+  }
+  // A script without a call is its header: checked whole, the checks at its
+  // end included.
+  for (const std::string text : {"@expect stencil 300 0 1\n", "@expect-picture stencil 0 0\n1 1\n"}) {
+    const std::string expected = checkError(text);
+    EXPECT_FALSE(expected.empty()) << text;
+    EXPECT_EQ(headerError(text), expected) << text;
+  }
+  const Script header = scanScriptHeader("# c\n@profile mesa\n@framebuffer 12 7\n@pass a\nglFinish\nglFoo\n", "s.gls");
+  EXPECT_EQ(header.width, 12);
+  EXPECT_EQ(header.height, 7);
+  EXPECT_EQ(header.profile, "mesa");
+}
+
+TEST(ScriptCheckThread, ReportsCheckScriptsErrorOrNone) {
+  std::string longValid = "@framebuffer 8 8\n";
+  for (int i = 0; i < 20000; ++i) longValid += "glRectf 0 0 0." + std::to_string(i) + " 1\n";
+  for (const std::string& text : {longValid, longValid + "glRectf 0 0 1\n", longValid + "@expect stencil 9 9 0\n",
+                                 std::string("glFoo\n"), std::string("")}) {
+    const std::string expected = checkError(text);
+    ScriptCheckThread check(text, "s.gls");
+    const std::optional<std::string>& error = check.wait();
+    EXPECT_EQ(error.value_or(""), expected) << text.substr(text.size() > 40 ? text.size() - 40 : 0);
+    EXPECT_EQ(check.passed(), expected.empty());
+    EXPECT_EQ(check.failed(), !expected.empty());
+    EXPECT_EQ(check.wait().value_or(""), expected);  // again: the same answer
+  }
+  // Destroyed while it runs: waited for, nothing left behind.
+  { ScriptCheckThread unwaited(longValid, "s.gls"); }
+}
+
+}  // namespace
+}  // namespace mpr
