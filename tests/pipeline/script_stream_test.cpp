@@ -2,7 +2,8 @@
 // corpus, its reproducers, the probe scripts (pixels, rectangles, `all`,
 // pictures) and scenes/, the streamed commands are parseScript's, in the
 // same order, field for field, probes placed alike; checkScript keeps no
-// command and reports a bad script's error where parseScript does;
+// command and reports a bad script's error where parseScript does, and
+// scanScriptHeader gives its header;
 // streamScriptAhead (the parsing on a thread of its own) hands on
 // streamScript's commands, stops when the sink throws and reports a read
 // error after the commands before it.
@@ -48,7 +49,7 @@ void expectSameCommand(const ScriptCommand& a, const ScriptCommand& b, const std
 
 TEST(ScriptStream, CommandsAreParseScriptsOnEveryScriptOfTheRepository) {
   const std::filesystem::path root(MPR_SOURCE_DIR);
-  int scripts = 0, probes = 0;
+  int scripts = 0, probes = 0, sized = 0, profiled = 0;
   for (const char* folder : {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "tests/probes/fail",
                              "scenes"})
     for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
@@ -61,6 +62,15 @@ TEST(ScriptStream, CommandsAreParseScriptsOnEveryScriptOfTheRepository) {
       EXPECT_EQ(header.width, stored.width) << path;
       EXPECT_EQ(header.height, stored.height) << path;
       EXPECT_EQ(header.profile, stored.profile) << path;
+      // What `mpr gl` starts from when the check runs beside it.
+      const Script scanned = scanScriptHeader(text, path);
+      EXPECT_TRUE(scanned.commands.empty()) << path;
+      EXPECT_EQ(scanned.file, header.file) << path;
+      EXPECT_EQ(scanned.width, stored.width) << path;
+      EXPECT_EQ(scanned.height, stored.height) << path;
+      EXPECT_EQ(scanned.profile, stored.profile) << path;
+      sized += stored.width != 256 || stored.height != 256;
+      profiled += stored.profile.has_value();
       std::vector<ScriptCommand> streamed;
       streamScript(text, header, [&](ScriptCommand&& c) { streamed.push_back(std::move(c)); });
       ASSERT_EQ(streamed.size(), stored.commands.size()) << path;
@@ -72,6 +82,8 @@ TEST(ScriptStream, CommandsAreParseScriptsOnEveryScriptOfTheRepository) {
     }
   EXPECT_GT(scripts, 50);
   EXPECT_GT(probes, 10);  // the probe forms were among them
+  EXPECT_GT(sized, 10);   // and headers of both kinds
+  EXPECT_GT(profiled, 10);
 }
 
 TEST(ScriptStream, CheckScriptReportsTheErrorParseScriptReports) {
