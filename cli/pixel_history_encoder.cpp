@@ -38,7 +38,7 @@ std::string wordingKey(const PixelEvent& e, const FragmentState& s) {
 constexpr std::size_t kChunk = std::size_t{256} << 10;
 
 PixelHistoryEncoder::PixelHistoryEncoder(int width, int height, int tileSize, std::size_t byteBudget)
-    : width_(width), height_(height), tile_(tileSize), tilesX_((width + tileSize - 1) / tileSize), budget_(byteBudget) {
+    : width_(width), tile_(tileSize), tilesX_((width + tileSize - 1) / tileSize), budget_(byteBudget) {
   tiles_.resize(static_cast<std::size_t>(tilesX_) * static_cast<std::size_t>((height + tileSize - 1) / tileSize));
   pixels_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   stopped_ = byteBudget == 0;  // no histories at all

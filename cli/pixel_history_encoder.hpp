@@ -78,7 +78,7 @@ class PixelHistoryEncoder {
   std::size_t tileIndex(int tx, int ty) const { return static_cast<std::size_t>(ty) * tilesX_ + tx; }
   void flush(Tile& t);
 
-  int width_, height_, tile_, tilesX_;
+  int width_, tile_, tilesX_;
   std::size_t budget_;
   std::vector<Tile> tiles_;
   std::vector<Pixel> pixels_;

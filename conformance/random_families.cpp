@@ -52,7 +52,10 @@ class FamilyGenerator {
   }
   std::string nums(std::initializer_list<double> v) {
     std::string s;
-    for (double x : v) s += (s.empty() ? "" : " ") + num(x);
+    for (double x : v) {
+      if (!s.empty()) s += ' ';
+      s += num(x);
+    }
     return s;
   }
   std::string colour4() { return nums({real(0, 1), real(0, 1), real(0, 1), real(0, 1)}); }

@@ -23,8 +23,9 @@ namespace {
       int end = x;
       std::string want, found;
       while (end < e.width() && value(e, end, y) != value(a, end, y)) {
-        want += (end > x ? " " : "") + value(e, end, y);
-        found += (end > x ? " " : "") + value(a, end, y);
+        if (end > x) want += ' ', found += ' ';
+        want += value(e, end, y);
+        found += value(a, end, y);
         ++end;
       }
       pixels += static_cast<std::size_t>(end - x);
@@ -54,8 +55,12 @@ namespace {
 ::testing::AssertionResult colorBuffersEqual(const Framebuffer& e, const Framebuffer& a, std::size_t maxRuns) {
   return compare("colour", e, a, maxRuns, [](const Framebuffer& fb, int x, int y) {
     const Rgba8& c = fb.color(x, y);
-    return "(" + std::to_string(c[0]) + "," + std::to_string(c[1]) + "," + std::to_string(c[2]) + "," +
-           std::to_string(c[3]) + ")";
+    std::string text = "(";  // appended, not "(" + ...: GCC 12's -Wrestrict false positive
+    for (int i = 0; i < 4; ++i) {
+      if (i > 0) text += ',';
+      text += std::to_string(c[static_cast<std::size_t>(i)]);
+    }
+    return text + ")";
   });
 }
 

@@ -118,7 +118,9 @@ TEST(WardFit, SmallAlphaTendsToTheLeadingTerm) {
     EXPECT_LT(f.c1, 2.0) << alpha;
     EXPECT_GT(f.c1, previous) << alpha;
     previous = f.c1;
-    if (alpha >= 0.03 && alpha <= 0.05) EXPECT_EQ(rounded(f.c1, 3), kWardFitExponent) << alpha;
+    if (alpha >= 0.03 && alpha <= 0.05) {
+      EXPECT_EQ(rounded(f.c1, 3), kWardFitExponent) << alpha;
+    }
   }
   const Fit f = fitPhong(normalIncidence(0.01, 10), 0.01);
   EXPECT_NEAR(f.c1, 2.0, 1e-4);
