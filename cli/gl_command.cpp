@@ -57,9 +57,13 @@ int runGl(const GlOptions& o) {
   // (printed), waiting for the check if it runs beside.
   const auto reportScriptError = [&] {
     if (!check) return false;
-    const std::optional<std::string>& error = check->wait();
-    if (error) std::cerr << *error << "\n";
-    return error.has_value();
+    try {
+      check->wait();
+    } catch (const ScriptError& e) {
+      std::cerr << e.what() << "\n";
+      return true;
+    }
+    return false;
   };
   std::string profileName = o.profile.empty() ? script.profile.value_or("indigo") : o.profile;
   const auto profile = findProfile(profileName);

@@ -6,27 +6,21 @@ namespace mpr {
 
 ScriptCheckThread::ScriptCheckThread(std::string_view text, std::string file)
     : thread_([this, text, file = std::move(file)] {
-        int ending = kPassed;
         try {
           checkScript(text, file);
-        } catch (const ScriptError& e) {
-          error_ = e.what();
-          ending = kFailed;
         } catch (...) {
-          otherError_ = std::current_exception();
-          ending = kFailed;
+          error_ = std::current_exception();
         }
-        state_.store(ending, std::memory_order_release);
+        state_.store(error_ ? kFailed : kPassed, std::memory_order_release);
       }) {}
 
 ScriptCheckThread::~ScriptCheckThread() {
   if (thread_.joinable()) thread_.join();
 }
 
-const std::optional<std::string>& ScriptCheckThread::wait() {
+void ScriptCheckThread::wait() {
   if (thread_.joinable()) thread_.join();
-  if (otherError_) std::rethrow_exception(otherError_);
-  return error_;
+  if (error_) std::rethrow_exception(error_);
 }
 
 }  // namespace mpr

@@ -9,7 +9,6 @@
 // before it, and the run is abandoned (failed() lets it stop early).
 #include <atomic>
 #include <exception>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -27,16 +26,15 @@ class ScriptCheckThread {
   // Without waiting: the check has ended (passed()) or found an error (failed()).
   bool passed() const { return state_.load(std::memory_order_acquire) == kPassed; }
   bool failed() const { return state_.load(std::memory_order_acquire) == kFailed; }
-  // Waits for the check to end: the script's first error (ScriptError's
-  // message, as checkScript throws it), or none. Another exception of the
-  // check (out of memory) is thrown here.
-  const std::optional<std::string>& wait();
+  // Waits for the check to end, then throws what checkScript threw: the
+  // script's first ScriptError (or another exception, out of memory); each
+  // call throws it again.
+  void wait();
 
  private:
   static constexpr int kRunning = 0, kPassed = 1, kFailed = 2;
   std::atomic<int> state_{kRunning};
-  std::optional<std::string> error_;
-  std::exception_ptr otherError_;
+  std::exception_ptr error_;
   std::thread thread_;
 };
 

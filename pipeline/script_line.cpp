@@ -2,7 +2,6 @@
 
 #include <bit>
 #include <cstdint>
-#include <cstring>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -19,7 +18,7 @@ std::size_t tokenEnd(std::string_view line, std::size_t i) {
 }
 
 #if defined(__SSE2__)
-// Bit k set where byte k of the 64 at p is c.
+// Bit k set where byte k of the 64 in `chunks` is c.
 std::uint64_t bytesEqual(const __m128i (&chunks)[4], char c) {
   const __m128i wanted = _mm_set1_epi8(c);
   std::uint64_t mask = 0;
