@@ -1,11 +1,9 @@
 #include "conformance/mesa_replayer.hpp"
 
-#include <GL/gl.h>
-#include <GL/osmesa.h>
-
 #include <cstdlib>
 #include <memory>
 
+#include "conformance/osmesa_library.hpp"
 #include "pipeline/gl_dispatch.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "util/transforms.hpp"
@@ -13,7 +11,7 @@
 namespace mpr {
 namespace {
 
-BufferSet readBuffers(const std::string& point, int w, int h) {
+BufferSet readBuffers(const OSMesaLibrary& gl, const std::string& point, int w, int h) {
   BufferSet b;
   b.point = point;
   b.width = w;
@@ -22,24 +20,24 @@ BufferSet readBuffers(const std::string& point, int w, int h) {
   b.color.resize(n * 4);
   b.depth.resize(n);
   b.stencil.resize(n);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, b.color.data());
+  gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, b.color.data());
   // 24-bit depth as the top bits of a 32-bit unsigned read.
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, b.depth.data());
+  gl.glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, b.depth.data());
   for (std::uint32_t& z : b.depth) z >>= 8;
-  glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, b.stencil.data());
+  gl.glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, b.stencil.data());
   return b;
 }
-
-void multMatrix(const Mat4& m) { glMultMatrixf(&m[0][0]); }
 
 // Mesa behind the typed GL API: every call of the table is the C function of
 // the same name (generated from pipeline/gl_calls.def); the two GLU calls are
 // built here as SGI's GLU builds them.
 class MesaApi final : public GLApi {
  public:
+  explicit MesaApi(const OSMesaLibrary& gl) : gl_(gl) {}
+
 #define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) \
-  void method params override { ::cFunction args; }
+  void method params override { gl_.cFunction args; }
 #define MPR_GLU_CALL(...)
 #include "pipeline/gl_calls.def"
 
@@ -59,10 +57,11 @@ class MesaApi final : public GLApi {
   std::uint64_t endFragmentCount() override { return 0; }
 
   bool usedWindowMap = false;
-};
 
-struct ContextDeleter {
-  void operator()(osmesa_context* c) const { OSMesaDestroyContext(c); }
+ private:
+  void multMatrix(const Mat4& m) { gl_.glMultMatrixf(&m[0][0]); }
+
+  const OSMesaLibrary& gl_;
 };
 
 }  // namespace
@@ -76,21 +75,24 @@ MesaReplay replayOnMesa(const Script& script, const std::string& driver) {
 MesaReplay replayOnMesa(const Script& script, const std::string& driver, const MesaCommandFeed& feed) {
   // Mesa reads GALLIUM_DRIVER when the context's screen is created.
   setenv("GALLIUM_DRIVER", driver.c_str(), 1);
-  std::unique_ptr<osmesa_context, ContextDeleter> ctx(OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, nullptr));
+  const OSMesaLibrary& gl = osmesaLibrary();
+  const auto destroy = [&gl](osmesa_context* c) { gl.OSMesaDestroyContext(c); };
+  std::unique_ptr<osmesa_context, decltype(destroy)> ctx(gl.OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, nullptr),
+                                                         destroy);
   if (!ctx) throw MesaUnavailable("OSMesa could not create an RGBA context with 24/8/16 bits (" + driver + ")");
   std::vector<std::uint8_t> pixels(static_cast<std::size_t>(script.width) * script.height * 4);
-  if (!OSMesaMakeCurrent(ctx.get(), pixels.data(), GL_UNSIGNED_BYTE, script.width, script.height))
+  if (!gl.OSMesaMakeCurrent(ctx.get(), pixels.data(), GL_UNSIGNED_BYTE, script.width, script.height))
     throw MesaUnavailable("OSMesaMakeCurrent failed");
-  OSMesaPixelStore(OSMESA_Y_UP, 1);
+  gl.OSMesaPixelStore(OSMESA_Y_UP, 1);
 
   MesaReplay out;
-  if (const GLubyte* r = glGetString(GL_RENDERER)) out.renderer = reinterpret_cast<const char*>(r);
+  if (const GLubyte* r = gl.glGetString(GL_RENDERER)) out.renderer = reinterpret_cast<const char*>(r);
   bool inBegin = false;
-  MesaApi mesa;
+  MesaApi mesa(gl);
   feed([&](const ScriptCommand& c) {
     if (c.kind == ScriptCommand::Kind::Snapshot) {
-      glFinish();
-      out.snapshots.push_back(readBuffers(c.label, script.width, script.height));
+      gl.glFinish();
+      out.snapshots.push_back(readBuffers(gl, c.label, script.width, script.height));
       return;
     }
     dispatch(mesa, c);
@@ -99,13 +101,13 @@ MesaReplay replayOnMesa(const Script& script, const std::string& driver, const M
     if (c.call == GLCall::End) inBegin = false;
     // glGetError is itself an error between glBegin and glEnd.
     if (!inBegin)
-      for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
+      for (GLenum e = gl.glGetError(); e != GL_NO_ERROR; e = gl.glGetError())
         out.glErrors.push_back(glErrorReport(c, e));
   });
   if (mesa.usedWindowMap)
     out.glErrors.push_back("@window_map: the end-of-pipeline map is MPR's emulated stage, not GL; Mesa drew unmapped");
-  glFinish();
-  out.snapshots.push_back(readBuffers("final", script.width, script.height));
+  gl.glFinish();
+  out.snapshots.push_back(readBuffers(gl, "final", script.width, script.height));
   return out;
 }
 

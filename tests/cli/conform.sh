@@ -11,4 +11,13 @@ printf 'glNope\n' > "$WORK/bad.gls"
 "$MPR" conform >/dev/null 2>&1; [[ $? -eq 2 ]] || fail "no input should exit 2"
 out="$("$MPR" conform -q --random 3 --seed 7)"; rc=$?
 [[ $rc -eq 0 && "$out" == *"agreement over 3 scripts on llvmpipe (3 within bounds)"* ]] || fail "random: $rc $out"
+# Mesa is opened when a replay needs it, not linked: other commands never load
+# libLLVM. MPR_OSMESA, when set, is the only file tried.
+if command -v readelf >/dev/null; then
+  readelf -d "$MPR" | grep -E 'NEEDED.*(OSMesa|LLVM)' && fail "mpr links Mesa"
+fi
+out="$(MPR_OSMESA=/nonexistent "$MPR" conform "$SRC/tests/conformance/alpha_test.gls" --report "$WORK/nomesa" 2>&1)"; rc=$?
+[[ $rc -eq 2 && "$out" == *"cannot open Mesa's OSMesa (tried /nonexistent"*"set MPR_OSMESA"* ]] ||
+  fail "without Mesa: $rc $out"
+[[ ! -e "$WORK/nomesa" ]] || fail "a report was written without Mesa"
 finish
