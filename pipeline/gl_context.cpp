@@ -201,7 +201,9 @@ void GLContext::clear(std::uint32_t mask) {
   const ClearMasks masks{frag_.colorMask, frag_.depth.writeMask, frag_.stencil.writeMask};
   ClearValues values = clearValues_;
   if (which.depth && clearByQuad(which)) values.depth = quadClearDepth_;
-  forRowBlocks(region, [&](const PixelRect& rows) { clearBuffers(fb_, rows, which, values, masks); });
+  forRowBlocks(region, [this, which, values, masks](const PixelRect& rows) {
+    clearBuffers(fb_, rows, which, values, masks);
+  });
 }
 
 // Whether Mesa's state tracker clears the depth buffer by drawing a quad
@@ -452,17 +454,21 @@ void GLContext::accum(GLenumValue op, float value) {
   analyseMatrices(true, true);  // _mesa_Accum validates the state
   // Accumulation works on the scissored window, like a clear.
   const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
-  forRowBlocks(region, [&](const PixelRect& rows) { accumulate(fb_, rows, a, value, frag_.colorMask); });
+  forRowBlocks(region, [this, a, value, mask = frag_.colorMask](const PixelRect& rows) {
+    accumulate(fb_, rows, a, value, mask);
+  });
 }
 
-void GLContext::forRowBlocks(const PixelRect& region, const std::function<void(const PixelRect&)>& work) {
-  // Every pixel's result depends on that pixel alone: blocks of rows on
-  // separate threads give the same bytes as the whole region at once.
-  const int height = region.y1 - region.y0;
-  const int n = region.empty() ? 1 : sharesFor(height, std::int64_t{region.x1 - region.x0} * height);
-  if (n <= 1) return work(region);
-  pool_->run(n, [&](int k) {
-    work(PixelRect{region.x0, region.y0 + height * k / n, region.x1, region.y0 + height * (k + 1) / n});
+void GLContext::forRowBlocks(const PixelRect& region, std::function<void(const PixelRect&)> work) {
+  if (!rowQueue) return work(region);
+  if (region.empty()) return;
+  // Every pixel's result depends on that pixel alone: row thread k takes
+  // the rows y with y mod n == k, the rows it draws (drawDeferred), so the
+  // pixel's clears, draws and accumulations stay in the order of the calls.
+  const int n = rowQueue->threads();
+  rowQueue->push([region, work = std::move(work), n](int k) {
+    for (int y = region.y0 + ((k - region.y0) % n + n) % n; y < region.y1; y += n)
+      work(PixelRect{region.x0, y, region.x1, y + 1});
   });
 }
 

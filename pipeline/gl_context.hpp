@@ -26,7 +26,7 @@
 #include "pipeline/primitive_assembly.hpp"
 #include "pipeline/span_shading.hpp"
 #include "util/vecmath.hpp"
-#include "util/worker_pool.hpp"
+#include "util/row_queue.hpp"
 
 namespace mpr {
 
@@ -64,12 +64,44 @@ struct FragmentEvent {
   Rgba8 colorAfter;
 };
 
-class GLContext {
+// The fragments a share of a draw tested and wrote.
+struct FragmentTally {
+  std::uint64_t tested = 0, written = 0;
+};
+
+namespace detail {
+// A GLContext's row threads (GLContext::setThreads) and what each has
+// counted since the context last drained them (thread k writes
+// rowTallies[k] only; apart, so no two share a cache line). A base of the
+// context: queued work refers to the context's members, so a context being
+// moved waits for it here, before any member moves.
+struct RowThreads {
+  struct alignas(64) RowTally {
+    FragmentTally tally;
+  };
+  std::vector<RowTally> rowTallies;
+  std::unique_ptr<RowQueue> rowQueue;
+
+  RowThreads() = default;
+  RowThreads(RowThreads&& other) {
+    if (other.rowQueue) other.rowQueue->wait();
+    rowTallies = std::move(other.rowTallies);
+    rowQueue = std::move(other.rowQueue);
+  }
+  RowThreads& operator=(RowThreads&&) = delete;
+};
+}  // namespace detail
+
+class GLContext : private detail::RowThreads {
  public:
   GLContext(int width, int height, const HardwareProfile& profile);
+  GLContext(GLContext&&) = default;  // after RowThreads has drained the queue
+  // Stops the row threads (after what is queued) while the framebuffer lives.
+  ~GLContext() { rowQueue.reset(); }
 
   // Readers see every call drawn: a GL_QUADS draw still open for merging
-  // (see OpenQuadDraw) is closed first, as glReadPixels flushes in GL.
+  // (see OpenQuadDraw) is closed first, as glReadPixels flushes in GL, and
+  // the draws, clears and accumulations queued for the row threads have run.
   Framebuffer& framebuffer() { settle(); return fb_; }
   const Framebuffer& framebuffer() const { settle(); return fb_; }
   const PipelineCounters& counters() const { settle(); return counters_; }
@@ -208,16 +240,17 @@ class GLContext {
   // when unset.
   std::function<void(const FragmentEvent&)> fragmentObserver;
 
-  // Threads a draw's rows are shared out over (util/worker_pool.hpp,
-  // drawDeferred): every pixel still sees its fragments in the same order, so
-  // the bytes, counts and observed histories are the same at any count (with
-  // an observer set, every triangle is drawn on one thread as it comes).
-  // Default 1. A share is at least `pixelsPerShare` pixels of bounding
-  // boxes (fewer do not pay for waking a thread; tests set 1 to share out
-  // every draw).
-  static constexpr std::int64_t kPixelsPerShare = 16384;
-  void setThreads(int threads, std::int64_t pixelsPerShare = kPixelsPerShare);
-  int threads() const { return pool_ ? pool_->threads() : 1; }
+  // Threads the framebuffer's rows are shared out over (util/row_queue.hpp,
+  // drawDeferred). With more than one, draws, clears and accumulations are
+  // queued and run behind the calls, thread k drawing the rows y with
+  // y mod threads == k of each in submission order; the calls go on
+  // (transform, lighting, set-up) while they run, and a reader waits for
+  // them. Every pixel still sees its fragments in the same order, so the
+  // bytes, counts and observed histories are the same at any count (with an
+  // observer set, every triangle is drawn on the calling thread as it comes).
+  // Default 1: everything on the calling thread.
+  void setThreads(int threads);
+  int threads() const { return rowQueue ? rowQueue->threads() : 1; }
 
  private:
   bool clearByQuad(const ClearBuffers& which) const;
@@ -296,16 +329,23 @@ class GLContext {
   // pairsSwapped: each two consecutive triangles drawn in the other order (an unclipped quad strip).
   void drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal,
                      bool pairsSwapped = false);
-  void settle() const;  // closes the open quad draw (a reader or a state change sees it drawn)
+  void settle() const;  // closes the open quad draw and drains the queue (a reader sees it drawn)
+  void drain() const;   // waits for the row threads' queue; their fragment counts into counters_
   void drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
   void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                 const LlvmpipeDepth& depth);
   // A triangle Mesa's draw module clips: llvmpipe's fan of it, each pixel its
   // fixed-point edges cover, its depth and colour from that fan triangle.
   void rasterizeLlvmpipeFan(const LlvmpipeDepth& depth);
-  struct FragmentTally {  // a band's counts, summed into counters_ after the triangle
-    std::uint64_t tested = 0, written = 0;
+  // What a draw's fragments go through: the per-fragment state and the
+  // function chosen for it, and whether fragmentObserver sees each one. A
+  // queued draw holds its own copy of the state (the calls go on changing frag_).
+  struct DrawState {
+    const FragmentState& frag;
+    FragmentPipeline pipeline;
+    bool observed;
   };
+  DrawState currentDrawState() const { return {frag_, fragmentPipeline_, static_cast<bool>(fragmentObserver)}; }
   // A triangle set up for drawing: what its rows need, and the rows.
   struct ClippedTriangleRows {
     std::array<SnappedVertex, 3> snapped;
@@ -323,37 +363,29 @@ class GLContext {
     bool fan;
   };
   // The rows y with y mod stride == phase of a set-up triangle.
-  void drawRows(const ClippedTriangleRows& job, FragmentTally& tally, int stride, int phase);
-  void drawRows(const FanTriangleRows& job, FragmentTally& tally, int stride, int phase);
+  void drawRows(const ClippedTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase);
+  void drawRows(const FanTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase);
   void defer(const ClippedTriangleRows& job);
   void defer(const FanTriangleRows& job);
-  void drawDeferred();  // the deferred triangles, in order, their rows shared over the pool
+  void drawDeferred();  // the deferred triangles, in order, queued for the row threads
   // The per-fragment operations, counted, observed.
-  void submitFragment(Fragment& f, FragmentFunction fragmentOp, FragmentTally& tally);
-  // The same for a span of fragments: one call of pipeline.span, or fragment
-  // by fragment in the span's order when an observer is set.
-  void submitSpan(const FragmentSpan& span, const FragmentPipeline& pipeline, FragmentTally& tally);
-  // Runs rows(tally, n, k) for k < n, each drawing the rows y with
-  // y mod n == k of a triangle whose pixels lie in [x0, x1] x [y0, y1] (n = 1
-  // when it is small, threads are off or an observer is set), then sums the
-  // tallies into counters_.
+  void submitFragment(Fragment& f, const DrawState& state, FragmentTally& tally);
+  // The same for a span of fragments: one call of the state's span function,
+  // or fragment by fragment in the span's order when it is observed.
+  void submitSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally);
+  // Draws now: rows(tally, n, k) for k < n on the row threads after what is
+  // queued, and waits (without threads, or with an observer set,
+  // rows(tally, 1, 0) here); the tallies summed into counters_.
   template <typename Rows>  // Rows: void(FragmentTally&, int n, int k); defined in gl_context_draw.cpp
-  void forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, const Rows& rows);
-  // rows(tally, n, k) for k < n on the pool (n <= 1: rows(tally, 1, 0) here),
-  // the tallies summed into counters_.
-  template <typename Rows>
-  void runShares(int n, const Rows& rows);
-  // How many shares `rows` rows holding `pixels` pixels are split into: 1
-  // without a pool, else at most a thread or a row each and pixelsPerShare_
-  // pixels at least.
-  int sharesFor(std::int64_t rows, std::int64_t pixels) const;
+  void drawNow(const Rows& rows);
   // The colours a triangle wound `ccw` (GL window space) takes: 0 front, 4
   // back (two-sided lighting); -1 when culled.
   int facingColorOffset(bool ccw) const;
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
-  // work(rows) over blocks of the region's rows, on the pool when it is large
-  // (clears and accumulation: a pixel's result is its own).
-  void forRowBlocks(const PixelRect& region, const std::function<void(const PixelRect&)>& work);
+  // work(rows) over the region's rows: queued for the row threads, one row at
+  // a time, or here without them (clears and accumulation: a pixel's result
+  // is its own). `work` is kept until it has run: it holds what it needs.
+  void forRowBlocks(const PixelRect& region, std::function<void(const PixelRect&)> work);
 
   // Values as Mesa's setters store and compare them, where MPR keeps them
   // converted (a stencil mask at the buffer's width, a clamped reference):
@@ -370,9 +402,7 @@ class GLContext {
   };
 
   Framebuffer fb_;
-  std::unique_ptr<WorkerPool> pool_;
   MesaSetterValues setterValues_;
-  std::int64_t pixelsPerShare_ = kPixelsPerShare;
   GLenumValue error_ = 0;
   PipelineCounters counters_;
 
@@ -391,7 +421,6 @@ class GLContext {
   std::vector<DeferredTriangle> deferred_;  // in submission order
   std::vector<ClippedTriangleRows> deferredClipped_;
   std::vector<FanTriangleRows> deferredFan_;
-  std::int64_t deferredPixels_ = 0;      // their bounding boxes' pixels
 
   // rasterization state
   bool cullEnabled_ = false;

@@ -91,6 +91,19 @@ void GLContext::settle() const {
   // The context is never const in storage; a reader through a const
   // reference expects what GL would show after a flush.
   if (quadDraw_.open) const_cast<GLContext*>(this)->flushVertices();
+  drain();
+}
+
+void GLContext::drain() const {
+  if (!rowQueue) return;
+  rowQueue->wait();
+  // Sums: the same whichever thread counted what.
+  auto* self = const_cast<GLContext*>(this);
+  for (RowTally& t : self->rowTallies) {
+    self->counters_.fragmentsTested += t.tally.tested;
+    self->counters_.fragmentsWritten += t.tally.written;
+    t.tally = {};
+  }
 }
 
 void GLContext::vboAttribute(int slot, int size) {
@@ -449,9 +462,9 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
   // chosen once, and one set of llvmpipe planes is reused (no allocation per
   // triangle once it has grown).
   fragmentPipeline_ = chooseFragmentPipeline(frag_);
-  // With threads and no observer the triangles are set up here and drawn
-  // together at the end, their rows shared out (drawDeferred).
-  deferring_ = pool_ != nullptr && !fragmentObserver;
+  // With threads and no observer the triangles are set up here and queued
+  // together at the end, for the row threads to draw (drawDeferred).
+  deferring_ = rowQueue != nullptr && !fragmentObserver;
   LlvmpipeDepth depth{window, &userPlanes, {}};
   for (const AssembledTriangle& t : tris) {
     std::array<ClipVertex, 3> tri = {processed[t.v[0]], processed[t.v[1]], processed[t.v[2]]};
@@ -497,71 +510,55 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const Llvmpip
   for (size_t i = 1; i + 1 < poly.size(); ++i) rasterizeClippedTriangle(poly[0], poly[i], poly[i + 1], depth);
 }
 
-inline void GLContext::submitFragment(Fragment& f, FragmentFunction fragmentOp, FragmentTally& tally) {
+inline void GLContext::submitFragment(Fragment& f, const DrawState& state, FragmentTally& tally) {
   ++tally.tested;
-  if (fragmentObserver) {
+  if (state.observed) {
     const int x = f.x, y = f.y;
     FragmentEvent ev{x, y, fb_.stencil(x, y), 0, fb_.depth(x, y), f.depth, FragmentFate::Written, {}};
-    ev.fate = fragmentOp(frag_, fb_, f);
+    ev.fate = state.pipeline.fragment(state.frag, fb_, f);
     ev.stencilAfter = fb_.stencil(x, y);
     ev.colorAfter = fb_.color(x, y);
     if (ev.fate == FragmentFate::Written) ++tally.written;
     fragmentObserver(ev);
     return;
   }
-  if (fragmentOp(frag_, fb_, f) == FragmentFate::Written) ++tally.written;
+  if (state.pipeline.fragment(state.frag, fb_, f) == FragmentFate::Written) ++tally.written;
 }
 
-inline void GLContext::submitSpan(const FragmentSpan& span, const FragmentPipeline& pipeline, FragmentTally& tally) {
-  if (fragmentObserver) {  // fragment by fragment, in the span's order, each one seen
+inline void GLContext::submitSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally) {
+  if (state.observed) {  // fragment by fragment, in the span's order, each one seen
     for (int i = 0; i < span.count; ++i) {
       Fragment f{span.x + i, span.y, span.depth[i], span.color[i], span.alpha[i]};
-      submitFragment(f, pipeline.fragment, tally);
+      submitFragment(f, state, tally);
     }
     return;
   }
   tally.tested += static_cast<std::uint64_t>(span.count);
-  tally.written += pipeline.span(frag_, fb_, span);
+  tally.written += state.pipeline.span(state.frag, fb_, span);
 }
 
-void GLContext::setThreads(int threads, std::int64_t pixelsPerShare) {
-  pool_ = threads > 1 ? std::make_unique<WorkerPool>(threads) : nullptr;
-  pixelsPerShare_ = std::max<std::int64_t>(1, pixelsPerShare);
+void GLContext::setThreads(int threads) {
+  drain();
+  rowQueue.reset();  // its threads stopped before rowTallies changes
+  rowTallies.assign(threads > 1 ? static_cast<std::size_t>(threads) : 0, RowTally{});
+  if (threads > 1) rowQueue = std::make_unique<RowQueue>(threads);
 }
 
 // A template, not a std::function: the per-triangle call would otherwise
 // allocate for the rows' closure.
 template <typename Rows>
-void GLContext::forEachBand(std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, const Rows& rows) {
-  const std::int64_t height = y1 - y0 + 1, pixels = height * std::max<std::int64_t>(0, x1 - x0 + 1);
-  runShares(fragmentObserver ? 1 : sharesFor(height, pixels), rows);
-}
-
-int GLContext::sharesFor(std::int64_t rows, std::int64_t pixels) const {
-  // A share of a few thousand pixels a thread pays for waking it.
-  if (!pool_ || rows <= 1) return 1;
-  return static_cast<int>(std::max<std::int64_t>(1, std::min<std::int64_t>({pool_->threads(), rows, pixels / pixelsPerShare_})));
-}
-
-template <typename Rows>
-void GLContext::runShares(int n, const Rows& rows) {
-  if (n <= 1) {
-    FragmentTally tally;
-    rows(tally, 1, 0);
-    counters_.fragmentsTested += tally.tested;
-    counters_.fragmentsWritten += tally.written;
+void GLContext::drawNow(const Rows& rows) {
+  if (rowQueue && !fragmentObserver) {
+    const int n = rowQueue->threads();
+    rowQueue->push([&, n](int k) { rows(rowTallies[static_cast<std::size_t>(k)].tally, n, k); });
+    drain();  // `rows` refers to this call's set-up
     return;
   }
-  std::vector<FragmentTally> tallies(static_cast<std::size_t>(n));
-  pool_->run(n, [&](int k) {
-    FragmentTally local;  // on the share's own stack: neighbours in one vector would share a cache line
-    rows(local, n, k);
-    tallies[static_cast<std::size_t>(k)] = local;
-  });
-  for (const FragmentTally& t : tallies) {  // sums: the same at any split
-    counters_.fragmentsTested += t.tested;
-    counters_.fragmentsWritten += t.written;
-  }
+  drain();  // what is queued goes first
+  FragmentTally tally;
+  rows(tally, 1, 0);
+  counters_.fragmentsTested += tally.tested;
+  counters_.fragmentsWritten += tally.written;
 }
 
 int GLContext::facingColorOffset(bool ccw) const {
@@ -688,12 +685,12 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   // such a triangle is drawn now, after what the draw has deferred.
   if (deferring_ && t.depth != TriangleShading::Depth::Planes) return defer(job);
   if (deferring_) drawDeferred();
-  forEachBand(job.colLo, job.colHi, job.rowLo, job.rowHi,
-              [&](FragmentTally& tally, int stride, int phase) { drawRows(job, tally, stride, phase); });
+  const DrawState state = currentDrawState();
+  drawNow([&](FragmentTally& tally, int stride, int phase) { drawRows(job, state, tally, stride, phase); });
 }
 
-void GLContext::drawRows(const ClippedTriangleRows& job, FragmentTally& tally, int stride, int phase) {
-  const FragmentPipeline pipeline = fragmentPipeline_;  // chosen by drawProcessed for this draw
+void GLContext::drawRows(const ClippedTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride,
+                         int phase) {
   FragmentSpan fragments;  // per share: shares run at once
   rasterizeTriangleSpans(
       job.snapped, job.bounds,
@@ -706,7 +703,7 @@ void GLContext::drawRows(const ClippedTriangleRows& job, FragmentTally& tally, i
           std::array<std::int64_t, 3> w;
           for (int i = 0; i < 3; ++i) w[i] = covered.w[i] + done * covered.stepX[i];
           shadeSpan(job.shading, w, covered.stepX, fragments);
-          submitSpan(fragments, pipeline, tally);
+          submitSpan(fragments, state, tally);
         }
       },
       stride, phase);
@@ -755,14 +752,13 @@ void GLContext::rasterizeLlvmpipeFan(const LlvmpipeDepth& depth) {
       defer(job);
       continue;
     }
-    // In GL's rows (y up), as every share of rows is counted.
-    forEachBand(job.x0, job.x1, fbHeight - 1 - job.y1, fbHeight - 1 - job.y0,
-                [&](FragmentTally& tally, int stride, int phase) { drawRows(job, tally, stride, phase); });
+    const DrawState state = currentDrawState();
+    drawNow([&](FragmentTally& tally, int stride, int phase) { drawRows(job, state, tally, stride, phase); });
   }
 }
 
-void GLContext::drawRows(const FanTriangleRows& job, FragmentTally& tally, int stride, int phase) {
-  const FragmentPipeline pipeline = fragmentPipeline_;
+void GLContext::drawRows(const FanTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride,
+                         int phase) {
   const LlvmpipeDepth::Triangle& t = job.triangle;
   const int fbHeight = fb_.height();
   FragmentSpan fragments;  // per share: shares run at once
@@ -790,42 +786,59 @@ void GLContext::drawRows(const FanTriangleRows& job, FragmentTally& tally, int s
       fragments.y = y;
       fragments.count = static_cast<int>(std::min<std::int64_t>(FragmentSpan::kCapacity, spanHi - from + 1));
       shadeFanSpan(job.shading, fragments);
-      submitSpan(fragments, pipeline, tally);
+      submitSpan(fragments, state, tally);
     }
   }
 }
 
 // A draw's triangles are set up one after the other and kept (deferring_),
-// then drawn here by row shares: share k holds the rows y with y mod n == k
-// of every triangle, in the triangles' order, so each pixel still sees its
-// fragments in submission order, whatever n is, and small triangles are
-// shared out too (llvmpipe bins its triangles into tiles for the same end).
+// then queued together (drawDeferred): row thread k draws the rows y with
+// y mod n == k of every triangle, in the triangles' order, so each pixel
+// still sees its fragments in submission order, whatever n is, and small
+// triangles are shared out too (llvmpipe bins its triangles into tiles for
+// the same end).
 void GLContext::defer(const ClippedTriangleRows& job) {
   deferred_.push_back({static_cast<std::uint32_t>(deferredClipped_.size()), false});
   deferredClipped_.push_back(job);
-  deferredPixels_ += (job.rowHi - job.rowLo + 1) * std::max<std::int64_t>(0, job.colHi - job.colLo + 1);
 }
 
 void GLContext::defer(const FanTriangleRows& job) {
   deferred_.push_back({static_cast<std::uint32_t>(deferredFan_.size()), true});
   deferredFan_.push_back(job);
-  deferredPixels_ += (job.y1 - job.y0 + 1) * (job.x1 - job.x0 + 1);
 }
 
 void GLContext::drawDeferred() {
   if (deferred_.empty()) return;
-  const int n = sharesFor(fb_.height(), deferredPixels_);
-  const auto share = [&](FragmentTally& tally, int stride, int phase) {
-    for (const DeferredTriangle& d : deferred_) {
-      if (d.fan) drawRows(deferredFan_[d.index], tally, stride, phase);
-      else drawRows(deferredClipped_[d.index], tally, stride, phase);
-    }
+  // The queued draw: its triangles and the state they are drawn with,
+  // copied, since the calls after it go on changing the context's.
+  struct Draw {
+    FragmentState frag;
+    FragmentPipeline pipeline;
+    FogState fog;
+    std::vector<DeferredTriangle> order;
+    std::vector<ClippedTriangleRows> clipped;
+    std::vector<FanTriangleRows> fan;
   };
-  runShares(n, share);
+  auto draw = std::make_shared<Draw>(Draw{frag_, fragmentPipeline_, fog_, std::move(deferred_), {}, {}});
+  draw->clipped = std::move(deferredClipped_);
+  draw->fan = std::move(deferredFan_);
+  // The shading read the context's fog; the copy is the draw's now.
+  for (ClippedTriangleRows& j : draw->clipped)
+    if (j.shading.fog) j.shading.fog = &draw->fog;
+  for (FanTriangleRows& j : draw->fan)
+    if (j.shading.fog) j.shading.fog = &draw->fog;
   deferred_.clear();
   deferredClipped_.clear();
   deferredFan_.clear();
-  deferredPixels_ = 0;
+  const int n = rowQueue->threads();
+  rowQueue->push([this, draw, n](int k) {
+    const DrawState state{draw->frag, draw->pipeline, false};
+    FragmentTally& tally = rowTallies[static_cast<std::size_t>(k)].tally;
+    for (const DeferredTriangle& d : draw->order) {
+      if (d.fan) drawRows(draw->fan[d.index], state, tally, n, k);
+      else drawRows(draw->clipped[d.index], state, tally, n, k);
+    }
+  });
 }
 
 }  // namespace mpr

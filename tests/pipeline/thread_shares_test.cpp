@@ -27,7 +27,7 @@ struct Buffers {
 Buffers runWithThreads(const Script& script, int threads) {
   const HardwareProfile profile = findProfile(script.profile.value_or("mesa")).value_or(mesaProfile());
   GLContext gl(script.width, script.height, profile);
-  gl.setThreads(threads, 1);
+  gl.setThreads(threads);
   runScript(script, gl);
   const Framebuffer& fb = gl.framebuffer();
   return {fb.colorData(), fb.depthData(), fb.stencilData(), fb.accumData(), gl.counters()};

@@ -1,0 +1,92 @@
+// The queue the draw path hands its rows to: every task runs once on every
+// thread, with its phase, in the order pushed on each thread; push returns
+// before the task has run; wait() waits for all of it and throws what a task
+// threw; more than kCapacity tasks in flight make push wait instead of
+// queueing without bound.
+#include "util/row_queue.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <future>
+#include <stdexcept>
+#include <vector>
+
+namespace mpr {
+namespace {
+
+TEST(RowQueue, EveryTaskRunsOnEveryThreadInOrder) {
+  for (int threads : {1, 2, 3, 8}) {
+    RowQueue queue(threads);
+    EXPECT_EQ(queue.threads(), threads);
+    // seen[k]: the tasks thread k ran, in its order (written by thread k alone).
+    std::vector<std::vector<int>> seen(static_cast<std::size_t>(threads));
+    const int tasks = 500;  // several times the capacity
+    for (int t = 0; t < tasks; ++t)
+      queue.push([&seen, t](int k) { seen[static_cast<std::size_t>(k)].push_back(t); });
+    queue.wait();
+    for (int k = 0; k < threads; ++k) {
+      ASSERT_EQ(seen[static_cast<std::size_t>(k)].size(), static_cast<std::size_t>(tasks)) << threads << " " << k;
+      for (int t = 0; t < tasks; ++t) ASSERT_EQ(seen[static_cast<std::size_t>(k)][static_cast<std::size_t>(t)], t);
+    }
+  }
+}
+
+TEST(RowQueue, PushReturnsBeforeTheTaskRunsAndWaitWaitsForIt) {
+  RowQueue queue(2);
+  std::promise<void> release;
+  std::shared_future<void> gate = release.get_future().share();
+  std::atomic<int> ran{0};
+  queue.push([gate, &ran](int) {
+    gate.wait();
+    ++ran;
+  });
+  EXPECT_EQ(ran.load(), 0);  // push came back while both threads are held
+  release.set_value();
+  queue.wait();
+  EXPECT_EQ(ran.load(), 2);
+}
+
+TEST(RowQueue, PushWaitsWhenCapacityTasksAreInFlight) {
+  RowQueue queue(2);
+  std::promise<void> release;
+  std::shared_future<void> gate = release.get_future().share();
+  for (std::uint64_t t = 0; t < RowQueue::kCapacity; ++t) queue.push([gate](int) { gate.wait(); });
+  std::atomic<bool> pushed{false};
+  std::thread producer([&] {
+    queue.push([](int) {});
+    pushed = true;
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_FALSE(pushed.load());  // the oldest task has not run: no room
+  release.set_value();
+  producer.join();
+  EXPECT_TRUE(pushed.load());
+  queue.wait();
+}
+
+TEST(RowQueue, WaitThrowsWhatATaskThrewAndTheQueueGoesOn) {
+  RowQueue queue(3);
+  std::atomic<int> after{0};
+  queue.push([](int k) {
+    if (k == 1) throw std::runtime_error("row 1");
+  });
+  queue.push([&after](int) { ++after; });
+  EXPECT_THROW(queue.wait(), std::runtime_error);
+  EXPECT_EQ(after.load(), 3);
+  EXPECT_NO_THROW(queue.wait());  // thrown once
+}
+
+TEST(RowQueue, DestructionRunsWhatIsQueued) {
+  std::atomic<int> ran{0};
+  {
+    RowQueue queue(2);
+    for (int t = 0; t < 100; ++t) queue.push([&ran](int) { ++ran; });
+  }
+  EXPECT_EQ(ran.load(), 200);
+}
+
+TEST(RowQueue, HardwareThreadsIsAtLeastOne) { EXPECT_GE(hardwareThreads(), 1); }
+
+}  // namespace
+}  // namespace mpr
