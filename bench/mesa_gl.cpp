@@ -1,8 +1,7 @@
 // Runs a GL script on Mesa through OSMesa as a whole process, for
 // bench/compare_mesa: the script is read with MPR's parser and streamed as
-// `mpr gl` streams it (checked on a thread beside while replayed as parsed,
-// pipeline/script_check_thread; a script error reported before anything
-// else) through
+// `mpr gl` streams it (replayed as parsed; the reading finds the first
+// script error, which ends the replay) through
 // conformance/'s replayer (the one `mpr conform` uses), the buffers read
 // back once at the end. Usage: mesa_gl [--driver llvmpipe|softpipe] SCRIPT
 // (LP_NUM_THREADS sets llvmpipe's threads; Mesa's default is one a core).
@@ -14,7 +13,6 @@
 
 #include "conformance/mesa_replayer.hpp"
 #include "pipeline/gl_script.hpp"
-#include "pipeline/script_check_thread.hpp"
 
 int main(int argc, char** argv) {
   std::string driver = "llvmpipe", path;
@@ -28,12 +26,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    // Streamed as `mpr gl` streams it with more than one thread: checked on
-    // a thread beside the replay (bathroom trace 1.06 -> 0.75 s, measured),
-    // which starts from the header.
+    // Streamed as `mpr gl` streams it with more than one thread: from the
+    // header, the text parsed once, its reading the check.
     const std::string text = mpr::readScriptText(path);
     const mpr::Script header = mpr::scanScriptHeader(text, path);
-    mpr::ScriptCheckThread check(text, path);
     std::size_t calls = 0;
     const mpr::MesaReplay replay =
         mpr::replayOnMesa(header, driver, [&](const std::function<void(const mpr::ScriptCommand&)>& replay) {
@@ -46,7 +42,6 @@ int main(int argc, char** argv) {
             replay(c);
           });
         });
-    check.wait();  // a script error: the ScriptError below
     std::printf("%s: %zu calls on %s\n", path.c_str(), calls, replay.renderer.c_str());
   } catch (const mpr::ScriptError& e) {
     std::fprintf(stderr, "%s\n", e.what());

@@ -14,7 +14,6 @@
 #include "pipeline/gl_context.hpp"
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/gl_script.hpp"
-#include "pipeline/script_check_thread.hpp"
 #include "pipeline/script_read_ahead.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "framebuffer/script_probe.hpp"
@@ -32,33 +31,30 @@ struct GlOptions {
 };
 
 int runGl(const GlOptions& o) {
-  // The script runs as it is read (streamScript): a check of the whole
-  // script finds every script error before anything is printed or written,
-  // and no parsed copy of the whole script is held. With one thread the
-  // check comes first; with more it runs on a thread of its own beside the
-  // run (ScriptCheckThread), which starts from the header and holds back
-  // every message and file until the check has passed.
+  // The script runs as it is read (streamScript), and no parsed copy of the
+  // whole script is held. Every script error is found before anything is
+  // printed or written: with one thread a check of the whole script comes
+  // first; with more the run starts from the header, and the reading ahead
+  // (streamScriptAhead) is the check, in the same order: every message and
+  // file waits until it has read the whole script (a script error ends the
+  // run), so the text is parsed once, not twice.
+  const bool checkedFirst = o.threads <= 1;
   std::string text;
   Script script;
-  std::unique_ptr<ScriptCheckThread> check;
   try {
     text = readScriptText(o.script);
-    if (o.threads > 1) {
-      script = scanScriptHeader(text, o.script);
-      check = std::make_unique<ScriptCheckThread>(text, o.script);
-    } else {
-      script = checkScript(text, o.script);
-    }
+    script = checkedFirst ? checkScript(text, o.script) : scanScriptHeader(text, o.script);
   } catch (const ScriptError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   }
   // A script error goes before any other message: true when there is one
-  // (printed), waiting for the check if it runs beside.
+  // (printed). Where the run ends before the reading has, the rest is
+  // checked now (the whole script: its first error).
   const auto reportScriptError = [&] {
-    if (!check) return false;
+    if (checkedFirst) return false;
     try {
-      check->wait();
+      checkScript(text, o.script);
     } catch (const ScriptError& e) {
       std::cerr << e.what() << "\n";
       return true;
@@ -89,10 +85,10 @@ int runGl(const GlOptions& o) {
   }
   gl->setThreads(o.threads);
 
-  // GL error reports met before the check has passed are held back, then
-  // printed in order; after it, printed as they come.
+  // GL error reports met before the whole script is known to have no error
+  // are held back, then printed in order; after that, printed as they come.
   std::string heldReports;
-  bool checked = !check;
+  bool checked = checkedFirst;
   const auto releaseReports = [&] {
     std::cerr << heldReports;
     heldReports.clear();
@@ -106,7 +102,6 @@ int runGl(const GlOptions& o) {
   ScriptHooks hooks;
   hooks.onPass = [&](const ScriptCommand&) { ++passes; };
   hooks.onGLError = [&](const ScriptCommand& c, std::uint32_t e) {
-    if (!checked && check->passed()) releaseReports();
     const std::string report = script.file + ":" + glErrorReport(c, e) + "\n";
     if (checked) std::cerr << report;
     else heldReports += report;
@@ -127,12 +122,10 @@ int runGl(const GlOptions& o) {
     probeReport = script.file + ":" + std::to_string(c.line) + ": " + c.label + ": " + p.message + "\n";
     throw ProbeFailed{};
   };
-  struct CheckFailed {};  // the check beside found an error: the run stops
   std::size_t errors = 0, calls = 0;
   try {
     ScriptExecutor executor(*gl, hooks);
     const auto run = [&](ScriptCommand&& c) {
-      if (!checked && check->failed()) throw CheckFailed{};
       if (c.kind == ScriptCommand::Kind::Call) ++calls;
       executor.execute(c);
     };
@@ -140,7 +133,6 @@ int runGl(const GlOptions& o) {
     // while the calls run (the same commands in the same order).
     if (o.threads > 1) streamScriptAhead(text, script, run);
     else streamScript(text, script, run);
-    if (reportScriptError()) return 2;
     releaseReports();
     errors = executor.finish();
   } catch (const ProbeFailed&) {
@@ -148,13 +140,11 @@ int runGl(const GlOptions& o) {
     releaseReports();
     std::cerr << probeReport;
     return 1;
-  } catch (const CheckFailed&) {
-    reportScriptError();
-    return 2;
   } catch (const ScriptError& e) {
-    // Met by the stream only when the check runs beside: the check reports
-    // the script's first error, this one or one before it.
-    if (!reportScriptError()) std::cerr << e.what() << "\n";
+    // Met by the stream only when nothing checked it first: the reading is
+    // in the script's order, so this is its first error (as checkScript
+    // reports it: tests/pipeline/script_stream_test.cpp).
+    std::cerr << e.what() << "\n";
     return 2;
   }
 

@@ -310,7 +310,7 @@ class Parser {
           if (picture->probe->cells.empty()) fail(lineNo, head.column, "@expect-picture has no rows before @end");
           finishPicture(*picture);
           if (mode_ == Mode::Stream) {
-            placeProbe(*picture, streamWidth_, streamHeight_);
+            placeStreamedProbe(*picture);
             pictureCommand.probe = std::move(picture->probe);
             emit(script, std::move(pictureCommand));
           } else {
@@ -332,7 +332,7 @@ class Parser {
         cmd.label = std::string(line.substr(static_cast<size_t>(head.column - 1),
                                             static_cast<size_t>(toks.back().column - head.column) + toks.back().text.size()));
         if (mode_ == Mode::Stream && head.text == "@expect") {
-          placeProbe(pp, streamWidth_, streamHeight_);
+          placeStreamedProbe(pp);
           cmd.probe = std::move(pp.probe);
           emit(script, std::move(cmd));
           continue;
@@ -493,6 +493,7 @@ class Parser {
       emit(script, std::move(cmd));
     }
     if (picture) fail(picture->line, picture->column, "@expect-picture without @end");
+    if (outsideProbe_) throw *outsideProbe_;
     for (PendingProbe& pp : probes) {
       placeProbe(pp, script.width, script.height);
       if (mode_ == Mode::Store) script.commands[pp.command].probe = std::move(pp.probe);
@@ -685,10 +686,25 @@ class Parser {
  private:
   void emit(Script& script, ScriptCommand&& cmd) const {
     if (mode_ == Mode::Store) script.commands.push_back(std::move(cmd));
-    else if (mode_ == Mode::Stream) sink_(std::move(cmd));
+    else if (mode_ == Mode::Stream && !outsideProbe_) sink_(std::move(cmd));
+  }
+
+  // A streamed probe is placed where it stands, in the window the header
+  // gave. One outside the window is the script's error only when no other
+  // error follows it, since the other modes place their probes at the end
+  // (the window is known only then): the stream keeps the error, hands
+  // nothing more on, and reads on to the end, which throws it.
+  void placeStreamedProbe(PendingProbe& pp) {
+    if (outsideProbe_) return;
+    try {
+      placeProbe(pp, streamWidth_, streamHeight_);
+    } catch (const ScriptError& e) {
+      outsideProbe_ = e;
+    }
   }
 
   std::string file_;
+  std::optional<ScriptError> outsideProbe_;  // a streamed probe's, thrown at the end (placeStreamedProbe)
   std::vector<Token> tokens_;          // the current line's
   ScriptCommand callCommand_;          // the current call line's (kind Call, no label or probe)
   std::array<const CallSpec*, 4> recentCalls_{};  // the last calls' entries

@@ -87,7 +87,7 @@ Script checkScript(std::string_view text, const std::string& file);
 // here is the script's first error, the one checkScript throws (a script
 // without a call is checked whole). What
 // streamScript needs to start before the whole script is checked
-// (pipeline/script_check_thread).
+// (`mpr gl` with more than one thread).
 Script scanScriptHeader(std::string_view text, const std::string& file);
 void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
 

@@ -6,11 +6,16 @@
 // scanScriptHeader gives its header;
 // streamScriptAhead (the parsing on a thread of its own) hands on
 // streamScript's commands, stops when the sink throws and reports a read
-// error after the commands before it.
+// error after the commands before it. What `mpr gl` with more than one
+// thread relies on instead of a whole check first: scanScriptHeader throws
+// checkScript's error where the first error stands before the first call,
+// and from its header the reading throws checkScript's error on every
+// script, thousands of broken ones included.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <filesystem>
+#include <random>
 #include <vector>
 
 #include "pipeline/gl_script.hpp"
@@ -184,6 +189,113 @@ TEST(ScriptStream, AheadStopsWhenTheSinkThrowsAndReportsReadErrorsAfterTheComman
   EXPECT_EQ(aheadError, plainError);
   EXPECT_EQ(aheadLines, plainLines);
   EXPECT_GT(aheadLines.size(), 5000u);
+}
+
+// The message of the ScriptError `read` throws on `text`, or "".
+template <typename Read>
+std::string errorOf(const Read& read) {
+  try {
+    read();
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "";
+}
+std::string checkError(const std::string& text) {
+  return errorOf([&] { checkScript(text, "s.gls"); });
+}
+std::string headerError(const std::string& text) {
+  return errorOf([&] { scanScriptHeader(text, "s.gls"); });
+}
+// The error `mpr gl` with more than one thread reports: the header's, or
+// else the reading's (ahead, on its own thread).
+std::string readingError(const std::string& text) {
+  const std::string header = headerError(text);
+  if (!header.empty()) return header;
+  return errorOf([&] { streamScriptAhead(text, scanScriptHeader(text, "s.gls"), [](ScriptCommand&&) {}); });
+}
+
+TEST(ScriptHeader, ThrowsCheckScriptsErrorOnlyBeforeTheFirstCall) {
+  // The first error before the first call, in directives of every kind.
+  for (const std::string text : {"@framebuffer 8\nglFinish\n", "@profile nope\n", "@framebuffer 8 8\n@pass\n",
+                                 "@snapshot a\n@snapshot a\nglFinish\n", "@framebuffer 8 8\n@framebuffer 8 8\n",
+                                 "@expect stencil 1\n", "@end\nglFinish\n", "@framebuffer 70000 8\n"}) {
+    const std::string expected = checkError(text);
+    EXPECT_FALSE(expected.empty()) << text;
+    EXPECT_EQ(headerError(text), expected) << text;
+  }
+  // An error at or after the first call is not the header's; neither is a
+  // probe outside the window, known only once the whole script is read.
+  for (const std::string text : {"@framebuffer 8 8\nglFinsh\n", "glFinish\n@framebuffer 8 8\n",
+                                 "@framebuffer 8 8\nglFinish\nglStencilFunc GL_LESS 1\n",
+                                 "@expect stencil 300 0 1\nglFinish\n"}) {
+    EXPECT_FALSE(checkError(text).empty()) << text;
+    EXPECT_EQ(headerError(text), "") << text;
+    EXPECT_EQ(readingError(text), checkError(text)) << text;
+  }
+  // A script without a call is its header: checked whole, the checks at its
+  // end included.
+  for (const std::string text : {"@expect stencil 300 0 1\n", "@expect-picture stencil 0 0\n1 1\n"}) {
+    const std::string expected = checkError(text);
+    EXPECT_FALSE(expected.empty()) << text;
+    EXPECT_EQ(headerError(text), expected) << text;
+  }
+  const Script header = scanScriptHeader("# c\n@profile mesa\n@framebuffer 12 7\n@pass a\nglFinish\nglFoo\n", "s.gls");
+  EXPECT_EQ(header.width, 12);
+  EXPECT_EQ(header.height, 7);
+  EXPECT_EQ(header.profile, "mesa");
+}
+
+// One seeded edit of a script's lines: a line dropped, doubled, moved or
+// cut short, a character changed, or a line of another kind put in.
+std::string mutated(const std::string& text, std::mt19937& rng) {
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at <= text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    lines.push_back(text.substr(at, end - at));
+    at = end + 1;
+  }
+  const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % std::max<std::size_t>(n, 1)); };
+  static const char* const kInserted[] = {"@framebuffer 8 8", "@profile mesa", "@expect stencil 300 0 1",
+                                          "@expect stencil 0 0 1 2", "@expect-picture stencil 0 0", "@end",
+                                          "@snapshot final", "@pass", "glBegin GL_QUADS", "glEnd",
+                                          "glVertex3f 0 0", "glFoo 1", "1 1 1", "glStencilFunc GL_LESS 1 0x1FF"};
+  const std::size_t i = pick(lines.size());
+  switch (rng() % 6) {
+    case 0: lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(i)); break;
+    case 1: lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(i), lines[i]); break;
+    case 2: std::swap(lines[i], lines[pick(lines.size())]); break;
+    case 3: lines[i] = lines[i].substr(0, pick(lines[i].size() + 1)); break;
+    case 4:
+      if (!lines[i].empty()) lines[i][pick(lines[i].size())] = " x9.-|@#e\t"[rng() % 11];
+      break;
+    default: lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(i), kInserted[pick(std::size(kInserted))]);
+  }
+  std::string out;
+  for (std::size_t k = 0; k < lines.size(); ++k) out += lines[k] + (k + 1 < lines.size() ? "\n" : "");
+  return out;
+}
+
+TEST(ScriptStream, TheReadingFromTheHeaderThrowsCheckScriptsError) {
+  const std::filesystem::path root(MPR_SOURCE_DIR);
+  std::vector<std::string> scripts;
+  for (const char* folder : {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "tests/probes/fail"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder))
+      if (entry.path().extension() == ".gls") scripts.push_back(readScriptText(entry.path().string()));
+  std::mt19937 rng(20261204);
+  int broken = 0, total = 0;
+  for (const std::string& original : scripts)
+    for (int k = 0; k < 25; ++k) {
+      std::string text = original;
+      for (int edits = 1 + static_cast<int>(rng() % 3); edits > 0; --edits) text = mutated(text, rng);
+      const std::string expected = checkError(text);
+      ASSERT_EQ(readingError(text), expected) << text;
+      broken += !expected.empty();
+      ++total;
+    }
+  // Both kinds, many of each.
+  EXPECT_GT(broken, total / 4);
+  EXPECT_LT(broken, total);
 }
 
 }  // namespace
