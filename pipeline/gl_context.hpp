@@ -365,7 +365,6 @@ class GLContext : private detail::RowThreads {
   // The rows y with y mod stride == phase of a set-up triangle.
   void drawRows(const ClippedTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase);
   void drawRows(const FanTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase);
-  void defer(const ClippedTriangleRows& job);
   void defer(const FanTriangleRows& job);
   void drawDeferred();  // the deferred triangles, in order, queued for the row threads
   // The per-fragment operations, counted, observed.

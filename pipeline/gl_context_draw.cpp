@@ -624,11 +624,34 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   LlvmpipeDepth fallback{depth.window, depth.userPlanes, {}};
   if (depth.triangles.empty() && !windowMap_) fallback.add(a, b, c);
   const LlvmpipeDepth& depthPlanes = depth.triangles.empty() ? fallback : depth;
+
+  // The triangle's rows within the region: none, and nothing is set up.
+  const std::int64_t top = std::max({snapped[0].y, snapped[1].y, snapped[2].y});
+  const std::int64_t bottom = std::min({snapped[0].y, snapped[1].y, snapped[2].y});
+  const std::int64_t left = std::min({snapped[0].x, snapped[1].x, snapped[2].x});
+  const std::int64_t right = std::max({snapped[0].x, snapped[1].x, snapped[2].x});
+  const std::int64_t rowLo = std::max<std::int64_t>(bounds.y0, ceilDivSubpixel(bottom));
+  const std::int64_t rowHi = std::min<std::int64_t>(bounds.y1 - 1, floorDivSubpixel(top));
+  if (rowLo > rowHi) return;
+  // Several planes are looked up in a set-up that lives for this call only:
+  // such a triangle is drawn now, after what the draw has deferred. Any
+  // other is set up where the draw keeps it (no copy of the set-up).
+  const bool severalPlanes = frag_.depth.enabled && !windowMap_ && depthPlanes.triangles.size() > 1;
+  const bool deferred = deferring_ && !severalPlanes;
+  ClippedTriangleRows drawnNow;
+  ClippedTriangleRows& job = deferred ? deferredClipped_.emplace_back() : drawnNow;
+  job.snapped = snapped;
+  job.bounds = bounds;
+  job.rowLo = rowLo;
+  job.rowHi = rowHi;
+  job.colLo = std::max<std::int64_t>(bounds.x0, ceilDivSubpixel(left));
+  job.colHi = std::min<std::int64_t>(bounds.x1 - 1, floorDivSubpixel(right));
+
   // Coverage is decided on the snapped vertices; colours are interpolated on
   // the unsnapped window positions, as llvmpipe sets up its planes (depth
   // follows llvmpipe's own arithmetic, see LlvmpipeDepth). All of it is set
   // up here once; shadeSpan does the per-pixel part a row span at a time.
-  TriangleShading t;
+  TriangleShading& t = job.shading;
   t.ex1 = xWin[1] - xWin[0];
   t.ey1 = yWin[1] - yWin[0];
   t.ex2 = xWin[2] - xWin[0];
@@ -670,20 +693,10 @@ void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& 
   else
     decideFlatColor(t);
 
-  // The triangle's rows within the region.
-  ClippedTriangleRows job{snapped, bounds, t, 0, 0, 0, 0};
-  const std::int64_t top = std::max({snapped[0].y, snapped[1].y, snapped[2].y});
-  const std::int64_t bottom = std::min({snapped[0].y, snapped[1].y, snapped[2].y});
-  const std::int64_t left = std::min({snapped[0].x, snapped[1].x, snapped[2].x});
-  const std::int64_t right = std::max({snapped[0].x, snapped[1].x, snapped[2].x});
-  job.rowLo = std::max<std::int64_t>(bounds.y0, ceilDivSubpixel(bottom));
-  job.rowHi = std::min<std::int64_t>(bounds.y1 - 1, floorDivSubpixel(top));
-  job.colLo = std::max<std::int64_t>(bounds.x0, ceilDivSubpixel(left));
-  job.colHi = std::min<std::int64_t>(bounds.x1 - 1, floorDivSubpixel(right));
-  if (job.rowLo > job.rowHi) return;
-  // Several planes are looked up in a set-up that lives for this call only:
-  // such a triangle is drawn now, after what the draw has deferred.
-  if (deferring_ && t.depth != TriangleShading::Depth::Planes) return defer(job);
+  if (deferred) {
+    deferred_.push_back({static_cast<std::uint32_t>(deferredClipped_.size() - 1), false});
+    return;
+  }
   if (deferring_) drawDeferred();
   const DrawState state = currentDrawState();
   drawNow([&](FragmentTally& tally, int stride, int phase) { drawRows(job, state, tally, stride, phase); });
@@ -797,11 +810,6 @@ void GLContext::drawRows(const FanTriangleRows& job, const DrawState& state, Fra
 // still sees its fragments in submission order, whatever n is, and small
 // triangles are shared out too (llvmpipe bins its triangles into tiles for
 // the same end).
-void GLContext::defer(const ClippedTriangleRows& job) {
-  deferred_.push_back({static_cast<std::uint32_t>(deferredClipped_.size()), false});
-  deferredClipped_.push_back(job);
-}
-
 void GLContext::defer(const FanTriangleRows& job) {
   deferred_.push_back({static_cast<std::uint32_t>(deferredFan_.size()), true});
   deferredFan_.push_back(job);
