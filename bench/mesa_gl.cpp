@@ -13,6 +13,7 @@
 
 #include "conformance/mesa_replayer.hpp"
 #include "pipeline/gl_script.hpp"
+#include "pipeline/script_text.hpp"
 
 int main(int argc, char** argv) {
   std::string driver = "llvmpipe", path;
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
   try {
     // Streamed as `mpr gl` streams it with more than one thread: from the
     // header, the text parsed once, its reading the check.
-    const std::string text = mpr::readScriptText(path);
+    mpr::ScriptText text = mpr::ScriptText::ofFile(path);
     const mpr::Script header = mpr::scanScriptHeader(text, path);
     std::size_t calls = 0;
     const mpr::MesaReplay replay =

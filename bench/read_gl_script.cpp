@@ -1,6 +1,6 @@
 // Reads a GL script as `mpr gl` (with more than one thread) and
-// bench/mesa_gl read it (the file read, the header scanned, then the text
-// streamed command by command, which finds its first error) and executes
+// bench/mesa_gl read it (the header scanned, then the file read a piece at
+// a time and streamed command by command, which finds its first error) and executes
 // nothing: the floor both sides of bench/compare_mesa share, printed there
 // as "reader".
 // Usage: read_gl_script SCRIPT
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "pipeline/gl_script.hpp"
+#include "pipeline/script_text.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -15,7 +16,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const std::string text = mpr::readScriptText(argv[1]);
+    mpr::ScriptText text = mpr::ScriptText::ofFile(argv[1]);
     const mpr::Script header = mpr::scanScriptHeader(text, argv[1]);
     std::size_t calls = 0;
     mpr::streamScript(text, header, [&](mpr::ScriptCommand&& c) { calls += c.kind == mpr::ScriptCommand::Kind::Call; });

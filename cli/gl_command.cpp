@@ -15,6 +15,7 @@
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/gl_script.hpp"
 #include "pipeline/script_read_ahead.hpp"
+#include "pipeline/script_text.hpp"
 #include "pipeline/gl_script_runner.hpp"
 #include "framebuffer/script_probe.hpp"
 
@@ -38,12 +39,14 @@ int runGl(const GlOptions& o) {
   // (streamScriptAhead) is the check, in the same order: every message and
   // file waits until it has read the whole script (a script error ends the
   // run), so the text is parsed once, not twice.
+  // The file is read a piece at a time by each pass (ScriptText), the same
+  // open file each time: memory holds the buffers and a piece, not the text.
   const bool checkedFirst = o.threads <= 1;
-  std::string text;
+  std::optional<ScriptText> text;
   Script script;
   try {
-    text = readScriptText(o.script);
-    script = checkedFirst ? checkScript(text, o.script) : scanScriptHeader(text, o.script);
+    text.emplace(ScriptText::ofFile(o.script));
+    script = checkedFirst ? checkScript(*text, o.script) : scanScriptHeader(*text, o.script);
   } catch (const ScriptError& e) {
     std::cerr << e.what() << "\n";
     return 2;
@@ -54,7 +57,7 @@ int runGl(const GlOptions& o) {
   const auto reportScriptError = [&] {
     if (checkedFirst) return false;
     try {
-      checkScript(text, o.script);
+      checkScript(*text, o.script);
     } catch (const ScriptError& e) {
       std::cerr << e.what() << "\n";
       return true;
@@ -131,8 +134,8 @@ int runGl(const GlOptions& o) {
     };
     // With more than one thread the script is parsed ahead on one of them
     // while the calls run (the same commands in the same order).
-    if (o.threads > 1) streamScriptAhead(text, script, run);
-    else streamScript(text, script, run);
+    if (o.threads > 1) streamScriptAhead(*text, script, run);
+    else streamScript(*text, script, run);
     releaseReports();
     errors = executor.finish();
   } catch (const ProbeFailed&) {

@@ -22,6 +22,7 @@
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/script_line.hpp"
+#include "pipeline/script_text.hpp"
 #include "util/spelling.hpp"
 
 namespace mpr {
@@ -278,22 +279,41 @@ class Parser {
     }
   }
 
-  Script parse(std::string_view text) {
-    Script script;
-    script.file = file_;
-    if (mode_ == Mode::Store) script.text = std::string(text);
-    bool sawCall = false, sawFramebuffer = false, sawProfile = false, counting = false, inBegin = false;
-    std::set<std::string> snapshots;
-    // A command a line at most: one allocation, not a growing copy of them all.
-    if (mode_ == Mode::Store)
-      script.commands.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
-    // Probes are checked against the window once the whole script is read.
-    std::vector<PendingProbe> probes;
-    std::optional<PendingProbe> picture;  // an @expect-picture awaiting its @end
-    ScriptCommand pictureCommand;         // its command, held back until @end when streaming
-    int lineNo = 0;
+  // The whole text, read from its start a piece at a time (a parser parses once).
+  Script parse(ScriptText& text) {
+    text.rewind();
+    script_.file = file_;
+    std::string_view piece;
+    bool last = false;
+    while (text.next(piece, last))
+      if (parseLines(piece, last)) return std::move(script_);  // the header's end
+    return finish();
+  }
+
+  // The lines of one piece of the text, in the state the pieces before
+  // left (the line number, the directives seen, an open @expect-picture);
+  // a piece that is not the last ends in '\n'. True when the parse is over
+  // (a header's first call).
+  bool parseLines(std::string_view text, bool lastPiece) {
+    Script& script = script_;
+    bool &sawCall = sawCall_, &sawFramebuffer = sawFramebuffer_, &sawProfile = sawProfile_, &counting = counting_,
+         &inBegin = inBegin_;
+    std::set<std::string>& snapshots = snapshots_;
+    std::vector<PendingProbe>& probes = probes_;
+    std::optional<PendingProbe>& picture = picture_;
+    ScriptCommand& pictureCommand = pictureCommand_;
+    int& lineNo = lineNo_;
+    if (mode_ == Mode::Store) {
+      script.text.append(text);
+      // A command a line at most: one allocation for the whole of a text
+      // given in one piece, not a growing copy of them all.
+      const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+      if (script.commands.capacity() < script.commands.size() + lines)
+        script.commands.reserve(std::max(script.commands.size() + lines, 2 * script.commands.capacity()));
+    }
     size_t pos = 0;
-    while (pos <= text.size()) {
+    // A piece before the last ends in '\n': no line starts at its end.
+    while (lastPiece ? pos <= text.size() : pos < text.size()) {
       const ScriptLine cut = nextScriptLine(text, pos, tokens_);
       const std::string_view line = cut.text;
       pos = cut.next;
@@ -429,7 +449,7 @@ class Parser {
                                       "@count_fragments, @expect, @expect-picture)");
       }
 
-      if (mode_ == Mode::Header) return script;
+      if (mode_ == Mode::Header) return true;
       // A script repeats a few calls (glNormal3f, glVertex3f, ...): the last
       // few are tried before the table.
       const CallSpec* spec = nullptr;
@@ -492,13 +512,18 @@ class Parser {
       if (cmd.call == GLCall::End) inBegin = false;
       emit(script, std::move(cmd));
     }
-    if (picture) fail(picture->line, picture->column, "@expect-picture without @end");
+    return false;
+  }
+
+  // After the last piece: what only the whole script settles.
+  Script finish() {
+    if (picture_) fail(picture_->line, picture_->column, "@expect-picture without @end");
     if (outsideProbe_) throw *outsideProbe_;
-    for (PendingProbe& pp : probes) {
-      placeProbe(pp, script.width, script.height);
-      if (mode_ == Mode::Store) script.commands[pp.command].probe = std::move(pp.probe);
+    for (PendingProbe& pp : probes_) {
+      placeProbe(pp, script_.width, script_.height);
+      if (mode_ == Mode::Store) script_.commands[pp.command].probe = std::move(pp.probe);
     }
-    return script;
+    return std::move(script_);
   }
 
   // A probe while parsing: where its coordinates were written, to report a
@@ -712,6 +737,14 @@ class Parser {
   Mode mode_ = Mode::Store;
   Sink sink_;
   int streamWidth_ = 0, streamHeight_ = 0;
+  // What the lines read so far left (parseLines).
+  Script script_;
+  bool sawCall_ = false, sawFramebuffer_ = false, sawProfile_ = false, counting_ = false, inBegin_ = false;
+  std::set<std::string> snapshots_;
+  std::vector<PendingProbe> probes_;    // placed in the window once the whole script is read
+  std::optional<PendingProbe> picture_; // an @expect-picture awaiting its @end
+  ScriptCommand pictureCommand_;        // its command, held back until @end when streaming
+  int lineNo_ = 0;
 };
 
 }  // namespace
@@ -763,18 +796,34 @@ std::size_t Script::probeCount() const {
   }));
 }
 
-Script parseScript(std::string_view text, const std::string& file) { return Parser(file).parse(text); }
-
-Script checkScript(std::string_view text, const std::string& file) {
-  return Parser(file, Parser::Mode::Check).parse(text);
+Script parseScript(std::string_view text, const std::string& file) {
+  ScriptText whole = ScriptText::ofString(text);
+  return Parser(file).parse(whole);
 }
 
-Script scanScriptHeader(std::string_view text, const std::string& file) {
+Script checkScript(ScriptText& text, const std::string& file) { return Parser(file, Parser::Mode::Check).parse(text); }
+
+Script checkScript(std::string_view text, const std::string& file) {
+  ScriptText whole = ScriptText::ofString(text);
+  return checkScript(whole, file);
+}
+
+Script scanScriptHeader(ScriptText& text, const std::string& file) {
   return Parser(file, Parser::Mode::Header).parse(text);
 }
 
-void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
+Script scanScriptHeader(std::string_view text, const std::string& file) {
+  ScriptText whole = ScriptText::ofString(text);
+  return scanScriptHeader(whole, file);
+}
+
+void streamScript(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
   Parser(header.file, Parser::Mode::Stream, sink, header.width, header.height).parse(text);
+}
+
+void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
+  ScriptText whole = ScriptText::ofString(text);
+  streamScript(whole, header, sink);
 }
 
 std::string readScriptText(const std::string& path) {

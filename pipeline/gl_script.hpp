@@ -1,7 +1,8 @@
 #pragma once
 // The GL script format (spec/gl-script.md): parsing into a checked list of
-// commands. Parsing is complete before anything runs, so a script error stops
-// the run before a single buffer is touched or a file written.
+// commands (parseScript), or checked and then streamed command by command
+// from a text read a piece at a time (checkScript, streamScript; `mpr gl`):
+// either way a script error is found before a file is written.
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -17,6 +18,8 @@
 #include "util/printable_text.hpp"
 
 namespace mpr {
+
+class ScriptText;  // pipeline/script_text.hpp
 
 // A user error in a script: FILE:LINE:COLUMN: message.
 class ScriptError : public std::runtime_error {
@@ -80,7 +83,10 @@ std::string readScriptText(const std::string& path);
 // complete (a probe with its pixels placed, an @expect-picture at its @end).
 // The commands and their order are parseScript's; memory does not grow with
 // the script's length.
+// Each also reads a ScriptText (a file a piece at a time: memory does not
+// grow with the script's length either), from its start.
 Script checkScript(std::string_view text, const std::string& file);
+Script checkScript(ScriptText& text, const std::string& file);
 // The header checkScript's Script holds (file, size, profile), from the
 // lines before the first call, where @framebuffer and @profile must stand:
 // those lines are checked as checkScript checks them, so an error thrown
@@ -89,6 +95,8 @@ Script checkScript(std::string_view text, const std::string& file);
 // streamScript needs to start before the whole script is checked
 // (`mpr gl` with more than one thread).
 Script scanScriptHeader(std::string_view text, const std::string& file);
+Script scanScriptHeader(ScriptText& text, const std::string& file);
 void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
+void streamScript(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
 
 }  // namespace mpr

@@ -47,6 +47,11 @@ void swapCommands(ScriptCommand& a, ScriptCommand& b) {
 }  // namespace
 
 void streamScriptAhead(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
+  ScriptText whole = ScriptText::ofString(text);
+  streamScriptAhead(whole, header, sink);
+}
+
+void streamScriptAhead(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
   std::mutex mutex;
   std::condition_variable changed;
   std::deque<Batch> full;   // parsed, in order

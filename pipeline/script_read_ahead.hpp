@@ -12,9 +12,13 @@
 #include <string_view>
 
 #include "pipeline/gl_script.hpp"
+#include "pipeline/script_text.hpp"
 
 namespace mpr {
 
 void streamScriptAhead(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
+// The same, the text read (a file: from its start, a piece at a time) on
+// the reading thread.
+void streamScriptAhead(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
 
 }  // namespace mpr

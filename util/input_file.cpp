@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -43,6 +44,17 @@ int openChecked(const std::string& path, std::uint64_t maxBytes, const std::stri
   return fd;
 }
 
+// read(2) of up to n bytes, retried when interrupted; throws on an error.
+std::size_t readSome(int fd, char* into, std::size_t n, const std::string& what) {
+  for (;;) {
+    const ssize_t r = ::read(fd, into, n);
+    if (r >= 0) return static_cast<std::size_t>(r);
+    if (errno == EINTR || errno == EAGAIN) continue;
+    const int e = errno;
+    throw std::runtime_error("cannot read " + what + ": " + std::strerror(e));
+  }
+}
+
 }  // namespace
 
 std::string inputFileProblem(const std::string& path, std::uint64_t maxBytes, const std::string& what) {
@@ -63,13 +75,11 @@ std::string readInputFile(const std::string& path, std::uint64_t maxBytes, const
   std::string bytes(static_cast<std::size_t>(size), '\0');
   std::size_t got = 0;
   const auto readSome = [&](char* into, std::size_t n) -> std::size_t {
-    for (;;) {
-      const ssize_t r = ::read(fd, into, n);
-      if (r >= 0) return static_cast<std::size_t>(r);
-      if (errno == EINTR || errno == EAGAIN) continue;
-      const int e = errno;
+    try {
+      return mpr::readSome(fd, into, n, what);
+    } catch (...) {
       ::close(fd);
-      throw std::runtime_error("cannot read " + what + ": " + std::strerror(e));
+      throw;
     }
   };
   while (got < bytes.size()) {
@@ -92,6 +102,84 @@ std::string readInputFile(const std::string& path, std::uint64_t maxBytes, const
   }
   ::close(fd);
   return bytes;
+}
+
+InputFilePieces::InputFilePieces(const std::string& path, std::uint64_t maxBytes, const std::string& what,
+                                 std::size_t pieceBytes)
+    : what_(what), maxBytes_(maxBytes), pieceBytes_(std::max<std::size_t>(pieceBytes, 1)), buffer_(pieceBytes_) {
+  std::string why;
+  fd_ = openChecked(path, maxBytes, what, why);
+  if (fd_ < 0) throw std::runtime_error(why);
+}
+
+InputFilePieces::~InputFilePieces() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void InputFilePieces::rewind() {
+  if (::lseek(fd_, 0, SEEK_SET) < 0) {
+    const int e = errno;
+    throw std::runtime_error("cannot read " + what_ + ": " + std::strerror(e));
+  }
+  begin_ = end_ = 0;
+  read_ = 0;
+  atEnd_ = handedLast_ = false;
+}
+
+void InputFilePieces::readMore() {
+  while (end_ < buffer_.size() && !atEnd_) {
+    const std::size_t n = readSome(fd_, buffer_.data() + end_, buffer_.size() - end_, what_);
+    if (n == 0) {
+      atEnd_ = true;
+      break;
+    }
+    read_ += n;
+    if (read_ > maxBytes_)
+      throw std::runtime_error("cannot read " + what_ + ": it grew past the " + sizeText(maxBytes_) + " MPR reads");
+    end_ += n;
+  }
+}
+
+bool InputFilePieces::next(std::string_view& piece, bool& last) {
+  if (handedLast_) return false;
+  // The part line the last piece left goes to the buffer's front.
+  if (begin_ > 0) {
+    std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
+    end_ -= begin_;
+    begin_ = 0;
+  }
+  // A buffer grown for a long line is a piece's size again once what it
+  // holds fits.
+  if (buffer_.size() > pieceBytes_ && end_ <= pieceBytes_) buffer_.resize(pieceBytes_);
+  std::size_t searched = pieceBytes_;  // no '\n' from here to the bytes read last time
+  for (;;) {
+    readMore();
+    const char* data = buffer_.data();
+    // The last '\n' within a piece's size: every line before it is whole.
+    std::size_t cut = 0;
+    for (std::size_t i = std::min(end_, pieceBytes_); i > 0 && cut == 0; --i)
+      if (data[i - 1] == '\n') cut = i;
+    // None: a line longer than a piece, whole to its '\n'.
+    if (cut == 0)
+      if (const void* nl = searched < end_ ? std::memchr(data + searched, '\n', end_ - searched) : nullptr)
+        cut = static_cast<std::size_t>(static_cast<const char*>(nl) - data) + 1;
+    if (cut > 0) {
+      piece = std::string_view(data, cut);
+      begin_ = cut;
+      last = false;
+      return true;
+    }
+    if (atEnd_) {
+      piece = std::string_view(data, end_);
+      begin_ = end_;
+      last = true;
+      handedLast_ = true;
+      return true;
+    }
+    // The line goes on past the buffer: a bigger one.
+    searched = std::max(searched, end_);
+    buffer_.resize(buffer_.size() * 2);
+  }
 }
 
 }  // namespace mpr

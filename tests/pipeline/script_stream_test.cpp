@@ -10,16 +10,21 @@
 // thread relies on instead of a whole check first: scanScriptHeader throws
 // checkScript's error where the first error stands before the first call,
 // and from its header the reading throws checkScript's error on every
-// script, thousands of broken ones included.
+// script, thousands of broken ones included. Read in pieces of whole
+// lines (ScriptText: a file a piece at a time), of any size from one byte,
+// every script parses and fails as its whole text does.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <vector>
 
 #include "pipeline/gl_script.hpp"
 #include "pipeline/script_read_ahead.hpp"
+#include "pipeline/script_text.hpp"
 
 namespace mpr {
 namespace {
@@ -296,6 +301,108 @@ TEST(ScriptStream, TheReadingFromTheHeaderThrowsCheckScriptsError) {
   // Both kinds, many of each.
   EXPECT_GT(broken, total / 4);
   EXPECT_LT(broken, total);
+}
+
+}  // namespace
+}  // namespace mpr
+
+namespace mpr {
+namespace {
+
+constexpr std::size_t kPieceSizes[] = {1, 5, 64, 1000};
+
+// The error of each pass `mpr gl` makes, read in pieces.
+std::string checkErrorInPieces(const std::string& text, std::size_t pieceBytes) {
+  return errorOf([&] {
+    ScriptText pieces = ScriptText::ofString(text, pieceBytes);
+    checkScript(pieces, "s.gls");
+  });
+}
+std::string readingErrorInPieces(const std::string& text, std::size_t pieceBytes) {
+  return errorOf([&] {
+    ScriptText pieces = ScriptText::ofString(text, pieceBytes);
+    const Script header = scanScriptHeader(pieces, "s.gls");
+    streamScriptAhead(pieces, header, [](ScriptCommand&&) {});
+  });
+}
+
+TEST(ScriptText, EveryScriptReadInPiecesIsItsWholeText) {
+  const std::filesystem::path root(MPR_SOURCE_DIR);
+  char dir[] = "/tmp/mpr-script-text-XXXXXX";
+  const std::filesystem::path temp = mkdtemp(dir);
+  int scripts = 0;
+  for (const char* folder : {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "tests/probes/fail"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+      if (entry.path().extension() != ".gls") continue;
+      const std::string path = entry.path().string();
+      const std::string text = readScriptText(path);
+      const Script stored = parseScript(text, path);
+      // The same text with CRLF line ends and no '\n' at the end: lines cut
+      // across pieces either way.
+      std::string crlf;
+      for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+      while (!crlf.empty() && (crlf.back() == '\n' || crlf.back() == '\r')) crlf.pop_back();
+      for (const std::string* variant : std::array<const std::string*, 2>{&text, &crlf}) {
+        for (std::size_t pieceBytes : kPieceSizes) {
+          const std::string where = path + " in pieces of " + std::to_string(pieceBytes);
+          ScriptText pieces = ScriptText::ofString(*variant, pieceBytes);
+          const Script header = checkScript(pieces, path);
+          EXPECT_EQ(header.width, stored.width) << where;
+          EXPECT_EQ(header.height, stored.height) << where;
+          EXPECT_EQ(header.profile, stored.profile) << where;
+          std::vector<ScriptCommand> streamed;
+          streamScript(pieces, header, [&](ScriptCommand&& c) { streamed.push_back(std::move(c)); });
+          ASSERT_EQ(streamed.size(), stored.commands.size()) << where;
+          for (std::size_t i = 0; i < streamed.size(); ++i)
+            expectSameCommand(streamed[i], stored.commands[i], where + " command " + std::to_string(i));
+        }
+      }
+      // From the file, in small pieces, on the reading thread.
+      const std::filesystem::path copy = temp / "s.gls";
+      std::ofstream(copy, std::ios::binary) << crlf;
+      ScriptText file = ScriptText::ofFile(copy.string(), 61);
+      const Script header = scanScriptHeader(file, path);
+      std::vector<ScriptCommand> ahead;
+      streamScriptAhead(file, header, [&](ScriptCommand&& c) { ahead.push_back(std::move(c)); });
+      ASSERT_EQ(ahead.size(), stored.commands.size()) << path;
+      for (std::size_t i = 0; i < ahead.size(); ++i)
+        expectSameCommand(ahead[i], stored.commands[i], path + " from its file, command " + std::to_string(i));
+      ++scripts;
+    }
+  std::filesystem::remove_all(temp);
+  EXPECT_GT(scripts, 50);
+}
+
+TEST(ScriptText, ABrokenScriptReadInPiecesFailsAsItsWholeText) {
+  const std::filesystem::path root(MPR_SOURCE_DIR);
+  std::vector<std::string> scripts;
+  for (const char* folder : {"tests/conformance", "tests/probes/pass"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder))
+      if (entry.path().extension() == ".gls") scripts.push_back(readScriptText(entry.path().string()));
+  std::mt19937 rng(20261205);
+  int broken = 0, total = 0;
+  for (const std::string& original : scripts)
+    for (int k = 0; k < 6; ++k) {
+      std::string text = original;
+      for (int edits = 1 + static_cast<int>(rng() % 3); edits > 0; --edits) text = mutated(text, rng);
+      const std::string expected = checkError(text);
+      for (std::size_t pieceBytes : kPieceSizes) {
+        ASSERT_EQ(checkErrorInPieces(text, pieceBytes), expected) << "pieces of " << pieceBytes << ":\n" << text;
+        ASSERT_EQ(readingErrorInPieces(text, pieceBytes), expected) << "pieces of " << pieceBytes << ":\n" << text;
+      }
+      broken += !expected.empty();
+      ++total;
+    }
+  EXPECT_GT(broken, total / 4);
+  EXPECT_LT(broken, total);
+}
+
+TEST(ScriptText, AnUnreadableFileIsAScriptErrorAsReadScriptTextsIs) {
+  for (const std::string& path : {std::string("/nonexistent/s.gls"), std::string("/tmp"), std::string("/dev/zero")}) {
+    const std::string expected = errorOf([&] { readScriptText(path); });
+    ASSERT_FALSE(expected.empty()) << path;
+    EXPECT_EQ(errorOf([&] { ScriptText::ofFile(path); }), expected) << path;
+  }
 }
 
 }  // namespace
