@@ -25,6 +25,7 @@
 #include "pipeline/gl_script.hpp"
 #include "pipeline/script_read_ahead.hpp"
 #include "pipeline/script_text.hpp"
+#include "testing/temp_folder.hpp"
 
 namespace mpr {
 namespace {
@@ -328,8 +329,8 @@ std::string readingErrorInPieces(const std::string& text, std::size_t pieceBytes
 
 TEST(ScriptText, EveryScriptReadInPiecesIsItsWholeText) {
   const std::filesystem::path root(MPR_SOURCE_DIR);
-  char dir[] = "/tmp/mpr-script-text-XXXXXX";
-  const std::filesystem::path temp = mkdtemp(dir);
+  const testing::TempFolder folder("mpr-script-text");
+  const std::filesystem::path& temp = folder.path;
   int scripts = 0;
   for (const char* folder : {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "tests/probes/fail"})
     for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
@@ -369,7 +370,6 @@ TEST(ScriptText, EveryScriptReadInPiecesIsItsWholeText) {
         expectSameCommand(ahead[i], stored.commands[i], path + " from its file, command " + std::to_string(i));
       ++scripts;
     }
-  std::filesystem::remove_all(temp);
   EXPECT_GT(scripts, 50);
 }
 

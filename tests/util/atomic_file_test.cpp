@@ -10,17 +10,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "testing/temp_folder.hpp"
+
 namespace mpr {
 namespace {
 namespace fs = std::filesystem;
 
-struct TempDir {
-  TempDir() {
-    char t[] = "/tmp/mpr-atomic-XXXXXX";
-    path = mkdtemp(t);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path path;
+struct TempDir : testing::TempFolder {
+  TempDir() : TempFolder("mpr-atomic") {}
 };
 
 std::string contents(const fs::path& p) {

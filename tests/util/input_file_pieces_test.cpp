@@ -16,17 +16,14 @@
 #include <string>
 #include <vector>
 
+#include "testing/temp_folder.hpp"
+
 namespace mpr {
 namespace {
 namespace fs = std::filesystem;
 
-struct TempDir {
-  TempDir() {
-    char t[] = "/tmp/mpr-pieces-XXXXXX";
-    path = mkdtemp(t);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path path;
+struct TempDir : testing::TempFolder {
+  TempDir() : TempFolder("mpr-pieces") {}
 };
 
 void writeFile(const fs::path& p, const std::string& bytes) {

@@ -1,0 +1,25 @@
+#pragma once
+// A fresh folder under /tmp for one test, removed with everything in it
+// when the test ends.
+#include <stdlib.h>
+
+#include <filesystem>
+#include <string>
+
+namespace mpr::testing {
+
+struct TempFolder {
+  explicit TempFolder(const std::string& prefix = "mpr-test") {
+    std::string t = "/tmp/" + prefix + "-XXXXXX";
+    if (mkdtemp(t.data()) != nullptr) path = t;
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    if (!path.empty()) std::filesystem::remove_all(path, ignored);
+  }
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+  std::filesystem::path path;
+};
+
+}  // namespace mpr::testing
