@@ -4,6 +4,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "framebuffer/fragment_ops.hpp"
 
@@ -59,6 +64,69 @@ void accumulateBytes(Framebuffer& fb, const PixelRect& r, const std::array<std::
   }
 }
 
+#if defined(__SSE2__)
+// The same for a finite scale, eight words (two pixels) at a time: each
+// colour byte's product computed as the table's entry is, in the same IEEE
+// single-precision steps, (byte * toUnit) * scale, instead of looked up
+// word by word. cvttps2dq is truncToInt32 itself (0x80000000 out of
+// range); wrapping keeps its low 16 bits, saturating clamps the product to
+// +-40000 first and packs with signed saturation, as productWord does (no
+// NaN arises: the bytes and the scale are finite; an infinite product
+// clamps or truncates as productWord's). The sums are paddw (wrapping) and
+// paddsw (saturating), sumWord's. Indigo's alpha word is kept.
+template <bool kWraps>
+__m128i productWords(__m128i bytes, __m128 toUnit, __m128 scale) {
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i words = _mm_unpacklo_epi8(bytes, zero);
+  __m128 lo = _mm_mul_ps(_mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(words, zero)), toUnit), scale);
+  __m128 hi = _mm_mul_ps(_mm_mul_ps(_mm_cvtepi32_ps(_mm_unpackhi_epi16(words, zero)), toUnit), scale);
+  if (!kWraps) {
+    const __m128 top = _mm_set1_ps(40000.0f), bottom = _mm_set1_ps(-40000.0f);
+    lo = _mm_min_ps(_mm_max_ps(lo, bottom), top);
+    hi = _mm_min_ps(_mm_max_ps(hi, bottom), top);
+  }
+  __m128i ilo = _mm_cvttps_epi32(lo), ihi = _mm_cvttps_epi32(hi);
+  if (kWraps) {  // the low 16 bits, sign-extended, so that the pack below is exact
+    ilo = _mm_srai_epi32(_mm_slli_epi32(ilo, 16), 16);
+    ihi = _mm_srai_epi32(_mm_slli_epi32(ihi, 16), 16);
+  }
+  return _mm_packs_epi32(ilo, ihi);
+}
+
+template <bool kLoad, bool kWraps, int kChannels>
+__m128i accumulatedWords(__m128i old, __m128i product) {
+  __m128i result = kLoad ? product : (kWraps ? _mm_add_epi16(old, product) : _mm_adds_epi16(old, product));
+  if (kChannels == 3) {
+    const __m128i rgb = _mm_set_epi16(0, -1, -1, -1, 0, -1, -1, -1);
+    result = _mm_or_si128(_mm_and_si128(rgb, result), _mm_andnot_si128(rgb, old));
+  }
+  return result;
+}
+
+template <bool kLoad, bool kWraps, int kChannels>
+void accumulateComputed(Framebuffer& fb, const PixelRect& r, float unit, float scaleValue) {
+  const __m128 toUnit = _mm_set1_ps(unit), scale = _mm_set1_ps(scaleValue);
+  const int width = r.x1 - r.x0;
+  for (int y = r.y0; y < r.y1; ++y) {
+    std::int16_t* a = fb.accum(r.x0, y);
+    const std::uint8_t* col = fb.color(r.x0, y).data();
+    int i = 0;
+    for (; i + 2 <= width; i += 2) {
+      const __m128i product = productWords<kWraps>(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(col + 4 * i)), toUnit, scale);
+      __m128i* at = reinterpret_cast<__m128i*>(a + 4 * i);
+      _mm_storeu_si128(at, accumulatedWords<kLoad, kWraps, kChannels>(_mm_loadu_si128(at), product));
+    }
+    if (i < width) {  // the last pixel of an odd row
+      std::int32_t bytes;
+      std::memcpy(&bytes, col + 4 * i, 4);
+      const __m128i product = productWords<kWraps>(_mm_cvtsi32_si128(bytes), toUnit, scale);
+      __m128i* at = reinterpret_cast<__m128i*>(a + 4 * i);
+      _mm_storel_epi64(at, accumulatedWords<kLoad, kWraps, kChannels>(_mm_loadl_epi64(at), product));
+    }
+  }
+}
+#endif
+
 template <bool kLoad>
 void accumulateBytes(Framebuffer& fb, const PixelRect& r, const std::array<std::int16_t, 256>& word, bool wraps,
                      int channels) {
@@ -112,6 +180,19 @@ void accumulate(Framebuffer& fb, const PixelRect& region, AccumOp op, float valu
       if (op == AccumOp::Accum && value == 0.0f) return;
       const float scale = value * 32767.0f;
       const float toUnit = 1.0f / 255.0f;
+#if defined(__SSE2__)
+      if (std::isfinite(scale)) {
+        const bool load = op == AccumOp::Load;
+        if (wraps) {
+          if (channels == 4) load ? accumulateComputed<true, true, 4>(fb, r, toUnit, scale) : accumulateComputed<false, true, 4>(fb, r, toUnit, scale);
+          else load ? accumulateComputed<true, true, 3>(fb, r, toUnit, scale) : accumulateComputed<false, true, 3>(fb, r, toUnit, scale);
+        } else {
+          if (channels == 4) load ? accumulateComputed<true, false, 4>(fb, r, toUnit, scale) : accumulateComputed<false, false, 4>(fb, r, toUnit, scale);
+          else load ? accumulateComputed<true, false, 3>(fb, r, toUnit, scale) : accumulateComputed<false, false, 3>(fb, r, toUnit, scale);
+        }
+        return;
+      }
+#endif
       // The product depends on the colour byte alone: its 256 words once,
       // then a lookup per channel.
       std::array<std::int16_t, 256> word;

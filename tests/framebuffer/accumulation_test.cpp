@@ -20,6 +20,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
 
 #include "framebuffer/accumulation.hpp"
 #include "framebuffer/clear.hpp"
@@ -448,6 +451,88 @@ TEST(AccumClear, IndigoClearsThreeWordsAndMesaFour) {
   EXPECT_EQ(wordsAt(indigo, 1, 0), (Words{16383, -16384, 3276, 0}));
   EXPECT_EQ(wordsAt(mesa, 0, 0), (Words{0, 0, 0, 0}));  // outside the region
   EXPECT_EQ(wordsAt(indigo, 0, 0), (Words{0, 0, 0, 0}));
+}
+
+}  // namespace
+}  // namespace mpr
+
+namespace mpr {
+namespace {
+
+// ---- every colour byte, every kind of value: the word arithmetic of the header
+// comment, word by word, against accumulate's (which takes eight words at a
+// time, pixels of odd rows included) -------------------------------------------
+
+// (short)(float) as the header comment gives it, then wrapped (mesa), or
+// clamped to +-40000 before saturating into a short, NaN giving 0 (indigo).
+std::int16_t productOf(float f, bool wraps) {
+  if (wraps) {
+    const std::int32_t t = (f > -2147483648.0f && f < 2147483648.0f) ? static_cast<std::int32_t>(f) : INT32_MIN;
+    return static_cast<std::int16_t>(static_cast<std::uint16_t>(t & 0xFFFF));
+  }
+  if (std::isnan(f)) return 0;
+  const float t = std::trunc(f);
+  const std::int64_t c = t < -40000.0f ? -40000 : (t > 40000.0f ? 40000 : static_cast<std::int64_t>(t));
+  return static_cast<std::int16_t>(c < -32768 ? -32768 : (c > 32767 ? 32767 : c));
+}
+
+std::int16_t sumOf(std::int16_t a, std::int16_t b, bool wraps) {
+  const std::int32_t s = std::int32_t{a} + b;
+  if (wraps) return static_cast<std::int16_t>(static_cast<std::uint16_t>(s & 0xFFFF));
+  return static_cast<std::int16_t>(s < -32768 ? -32768 : (s > 32767 ? 32767 : s));
+}
+
+TEST(AccumBothProfiles, LoadAndAccumOfEveryByteAndValueAreTheWordArithmetic) {
+  const float values[] = {1.0f, 0.5f, -1.0f, 0.25f, 1e-7f, -3.7f, 2.0f, 1e5f, -1e9f, 7e4f, 65537.0f / 32767.0f,
+                          std::nextafter(std::numeric_limits<float>::max() / 32767.0f, 0.0f),
+                          std::numeric_limits<float>::max() / 32767.0f, -std::numeric_limits<float>::max() / 32767.0f,
+                          std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                          std::numeric_limits<float>::quiet_NaN()};
+  std::mt19937 rng(20261205);
+  int words = 0;
+  for (const bool mesa : {true, false}) {
+    const HardwareProfile& profile = mesa ? mesaProfile() : indigoProfile();
+    const int channels = mesa ? 4 : 3;
+    for (const int width : {1, 2, 7, 64}) {
+      // Every byte in every channel: 256 pixels of colour, spread over rows.
+      const int height = (256 + width - 1) / width;
+      Framebuffer fb(width, height, profile);
+      for (int i = 0; i < width * height; ++i) {
+        const int x = i % width, y = i / width;
+        fb.color(x, y) = {static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(255 - i % 256),
+                          static_cast<std::uint8_t>(i * 7), static_cast<std::uint8_t>(rng())};
+      }
+      for (const AccumOp op : {AccumOp::Load, AccumOp::Accum})
+        for (const float value : values) {
+          std::vector<Words> before;
+          for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+              const auto r = [&] { return static_cast<std::int16_t>(rng()); };
+              setWords(fb, x, y, {r(), r(), r(), static_cast<std::int16_t>(mesa ? r() : 0)});
+              before.push_back(wordsAt(fb, x, y));
+            }
+          // A region one column and one row in from the edges, where there are any.
+          const PixelRect region{width > 2 ? 1 : 0, height > 2 ? 1 : 0, width, height};
+          accumulate(fb, region, op, value, kAllChannels);
+          const float scale = value * 32767.0f;
+          for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+              Words expected = before[static_cast<std::size_t>(y * width + x)];
+              const bool inside = x >= region.x0 && y >= region.y0;
+              const bool skipped = op == AccumOp::Accum && value == 0.0f;
+              for (int c = 0; c < channels && inside && !skipped; ++c) {
+                const std::int16_t p = productOf(static_cast<float>(fb.color(x, y)[c]) * (1.0f / 255.0f) * scale, mesa);
+                expected[c] = op == AccumOp::Load ? p : sumOf(expected[c], p, mesa);
+              }
+              ASSERT_EQ(wordsAt(fb, x, y), expected) << (mesa ? "mesa" : "indigo") << " width " << width << " op "
+                                                     << static_cast<int>(op) << " value " << value << " pixel " << x
+                                                     << "," << y;
+              words += 4;
+            }
+        }
+    }
+  }
+  EXPECT_GT(words, 100000);
 }
 
 }  // namespace
