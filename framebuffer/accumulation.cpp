@@ -112,7 +112,8 @@ void accumulateComputed(Framebuffer& fb, const PixelRect& r, float unit, float s
     const std::uint8_t* col = fb.color(r.x0, y).data();
     int i = 0;
     for (; i + 2 <= width; i += 2) {
-      const __m128i product = productWords<kWraps>(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(col + 4 * i)), toUnit, scale);
+      const __m128i bytes = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(col + 4 * i));
+      const __m128i product = productWords<kWraps>(bytes, toUnit, scale);
       __m128i* at = reinterpret_cast<__m128i*>(a + 4 * i);
       _mm_storeu_si128(at, accumulatedWords<kLoad, kWraps, kChannels>(_mm_loadu_si128(at), product));
     }
@@ -123,6 +124,17 @@ void accumulateComputed(Framebuffer& fb, const PixelRect& r, float unit, float s
       __m128i* at = reinterpret_cast<__m128i*>(a + 4 * i);
       _mm_storel_epi64(at, accumulatedWords<kLoad, kWraps, kChannels>(_mm_loadl_epi64(at), product));
     }
+  }
+}
+
+template <bool kLoad>
+void accumulateComputed(Framebuffer& fb, const PixelRect& r, float unit, float scale, bool wraps, int channels) {
+  if (wraps) {
+    if (channels == 4) accumulateComputed<kLoad, true, 4>(fb, r, unit, scale);
+    else accumulateComputed<kLoad, true, 3>(fb, r, unit, scale);
+  } else {
+    if (channels == 4) accumulateComputed<kLoad, false, 4>(fb, r, unit, scale);
+    else accumulateComputed<kLoad, false, 3>(fb, r, unit, scale);
   }
 }
 #endif
@@ -182,14 +194,8 @@ void accumulate(Framebuffer& fb, const PixelRect& region, AccumOp op, float valu
       const float toUnit = 1.0f / 255.0f;
 #if defined(__SSE2__)
       if (std::isfinite(scale)) {
-        const bool load = op == AccumOp::Load;
-        if (wraps) {
-          if (channels == 4) load ? accumulateComputed<true, true, 4>(fb, r, toUnit, scale) : accumulateComputed<false, true, 4>(fb, r, toUnit, scale);
-          else load ? accumulateComputed<true, true, 3>(fb, r, toUnit, scale) : accumulateComputed<false, true, 3>(fb, r, toUnit, scale);
-        } else {
-          if (channels == 4) load ? accumulateComputed<true, false, 4>(fb, r, toUnit, scale) : accumulateComputed<false, false, 4>(fb, r, toUnit, scale);
-          else load ? accumulateComputed<true, false, 3>(fb, r, toUnit, scale) : accumulateComputed<false, false, 3>(fb, r, toUnit, scale);
-        }
+        if (op == AccumOp::Load) accumulateComputed<true>(fb, r, toUnit, scale, wraps, channels);
+        else accumulateComputed<false>(fb, r, toUnit, scale, wraps, channels);
         return;
       }
 #endif

@@ -295,21 +295,13 @@ class Parser {
   // a piece that is not the last ends in '\n'. True when the parse is over
   // (a header's first call).
   bool parseLines(std::string_view text, bool lastPiece) {
-    Script& script = script_;
-    bool &sawCall = sawCall_, &sawFramebuffer = sawFramebuffer_, &sawProfile = sawProfile_, &counting = counting_,
-         &inBegin = inBegin_;
-    std::set<std::string>& snapshots = snapshots_;
-    std::vector<PendingProbe>& probes = probes_;
-    std::optional<PendingProbe>& picture = picture_;
-    ScriptCommand& pictureCommand = pictureCommand_;
-    int& lineNo = lineNo_;
     if (mode_ == Mode::Store) {
-      script.text.append(text);
+      script_.text.append(text);
       // A command a line at most: one allocation for the whole of a text
       // given in one piece, not a growing copy of them all.
       const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
-      if (script.commands.capacity() < script.commands.size() + lines)
-        script.commands.reserve(std::max(script.commands.size() + lines, 2 * script.commands.capacity()));
+      if (script_.commands.capacity() < script_.commands.size() + lines)
+        script_.commands.reserve(std::max(script_.commands.size() + lines, 2 * script_.commands.capacity()));
     }
     size_t pos = 0;
     // A piece before the last ends in '\n': no line starts at its end.
@@ -317,140 +309,140 @@ class Parser {
       const ScriptLine cut = nextScriptLine(text, pos, tokens_);
       const std::string_view line = cut.text;
       pos = cut.next;
-      ++lineNo;
+      ++lineNo_;
       const std::vector<Token>& toks = tokens_;
       if (toks.empty()) {
         if (cut.last) break;
         continue;
       }
       const Token& head = toks[0];
-      if (picture) {
+      if (picture_) {
         if (head.text == "@end") {
-          if (toks.size() != 1) fail(lineNo, toks[1].column, "@end takes nothing");
-          if (picture->probe->cells.empty()) fail(lineNo, head.column, "@expect-picture has no rows before @end");
-          finishPicture(*picture);
+          if (toks.size() != 1) fail(lineNo_, toks[1].column, "@end takes nothing");
+          if (picture_->probe->cells.empty()) fail(lineNo_, head.column, "@expect-picture has no rows before @end");
+          finishPicture(*picture_);
           if (mode_ == Mode::Stream) {
-            placeStreamedProbe(*picture);
-            pictureCommand.probe = std::move(picture->probe);
-            emit(script, std::move(pictureCommand));
+            placeStreamedProbe(*picture_);
+            pictureCommand_.probe = std::move(picture_->probe);
+            emit(script_, std::move(pictureCommand_));
           } else {
-            probes.push_back(std::move(*picture));
+            probes_.push_back(std::move(*picture_));
           }
-          picture.reset();
+          picture_.reset();
         } else {
-          addPictureRow(*picture, toks, lineNo);
+          addPictureRow(*picture_, toks, lineNo_);
         }
         continue;
       }
       if (head.text == "@expect" || head.text == "@expect-picture") {
-        if (inBegin) fail(lineNo, head.column, std::string(head.text) + " between glBegin and glEnd");
-        PendingProbe pp = head.text == "@expect" ? parseExpect(toks, lineNo) : parseExpectPicture(toks, lineNo);
-        pp.command = script.commands.size();
+        if (inBegin_) fail(lineNo_, head.column, std::string(head.text) + " between glBegin and glEnd");
+        PendingProbe pp = head.text == "@expect" ? parseExpect(toks, lineNo_) : parseExpectPicture(toks, lineNo_);
+        pp.command = script_.commands.size();
         ScriptCommand cmd;
         cmd.kind = ScriptCommand::Kind::Probe;
-        cmd.line = lineNo;
+        cmd.line = lineNo_;
         cmd.label = std::string(line.substr(static_cast<size_t>(head.column - 1),
                                             static_cast<size_t>(toks.back().column - head.column) + toks.back().text.size()));
         if (mode_ == Mode::Stream && head.text == "@expect") {
           placeStreamedProbe(pp);
           cmd.probe = std::move(pp.probe);
-          emit(script, std::move(cmd));
+          emit(script_, std::move(cmd));
           continue;
         }
-        if (mode_ == Mode::Stream) pictureCommand = std::move(cmd);  // handed on at its @end
-        else emit(script, std::move(cmd));
-        if (head.text == "@expect") probes.push_back(std::move(pp));
-        else picture = std::move(pp);
+        if (mode_ == Mode::Stream) pictureCommand_ = std::move(cmd);  // handed on at its @end
+        else emit(script_, std::move(cmd));
+        if (head.text == "@expect") probes_.push_back(std::move(pp));
+        else picture_ = std::move(pp);
         continue;
       }
-      if (head.text == "@end") fail(lineNo, head.column, "@end without @expect-picture");
+      if (head.text == "@end") fail(lineNo_, head.column, "@end without @expect-picture");
       if (head.text[0] == '@') {
         ScriptCommand cmd;
-        cmd.line = lineNo;
+        cmd.line = lineNo_;
         if (head.text == "@framebuffer") {
-          if (sawCall) fail(lineNo, head.column, "@framebuffer must come before the first call");
-          if (sawFramebuffer) fail(lineNo, head.column, "@framebuffer given twice");
-          if (toks.size() != 3) fail(lineNo, head.column, "@framebuffer takes a width and a height");
+          if (sawCall_) fail(lineNo_, head.column, "@framebuffer must come before the first call");
+          if (sawFramebuffer_) fail(lineNo_, head.column, "@framebuffer given twice");
+          if (toks.size() != 3) fail(lineNo_, head.column, "@framebuffer takes a width and a height");
           const auto w = parseInteger(toks[1].text), h = parseInteger(toks[2].text);
-          if (!w) fail(lineNo, toks[1].column, "framebuffer width must be an integer");
-          if (!h) fail(lineNo, toks[2].column, "framebuffer height must be an integer");
+          if (!w) fail(lineNo_, toks[1].column, "framebuffer width must be an integer");
+          if (!h) fail(lineNo_, toks[2].column, "framebuffer height must be an integer");
           const std::string why = Framebuffer::checkSize(*w, *h);
-          if (!why.empty()) fail(lineNo, toks[1].column, why);
-          script.width = static_cast<int>(*w);
-          script.height = static_cast<int>(*h);
-          sawFramebuffer = true;
+          if (!why.empty()) fail(lineNo_, toks[1].column, why);
+          script_.width = static_cast<int>(*w);
+          script_.height = static_cast<int>(*h);
+          sawFramebuffer_ = true;
           continue;
         }
         if (head.text == "@profile") {
-          if (sawCall) fail(lineNo, head.column, "@profile must come before the first call");
-          if (sawProfile) fail(lineNo, head.column, "@profile given twice");
-          if (toks.size() != 2) fail(lineNo, head.column, "@profile takes one profile name");
+          if (sawCall_) fail(lineNo_, head.column, "@profile must come before the first call");
+          if (sawProfile_) fail(lineNo_, head.column, "@profile given twice");
+          if (toks.size() != 2) fail(lineNo_, head.column, "@profile takes one profile name");
           if (!findProfile(toks[1].text)) {
             std::string names;
             for (const auto& n : profileNames()) names += (names.empty() ? "" : ", ") + n;
-            fail(lineNo, toks[1].column, "unknown profile '" + std::string(toks[1].text) + "' (known: " + names + ")");
+            fail(lineNo_, toks[1].column, "unknown profile '" + std::string(toks[1].text) + "' (known: " + names + ")");
           }
-          script.profile = std::string(toks[1].text);
-          sawProfile = true;
+          script_.profile = std::string(toks[1].text);
+          sawProfile_ = true;
           continue;
         }
         if (head.text == "@pass") {
-          if (toks.size() < 2) fail(lineNo, head.column, "@pass needs a label");
+          if (toks.size() < 2) fail(lineNo_, head.column, "@pass needs a label");
           cmd.kind = ScriptCommand::Kind::Pass;
           // The label is the rest of the line, comments excluded.
           const size_t from = static_cast<size_t>(toks[1].column - 1);
           const Token& last = toks.back();
           cmd.label = std::string(line.substr(from, static_cast<size_t>(last.column - 1) + last.text.size() - from));
-          emit(script, std::move(cmd));
+          emit(script_, std::move(cmd));
           continue;
         }
         if (head.text == "@snapshot") {
-          if (toks.size() != 2) fail(lineNo, head.column, "@snapshot takes one name");
+          if (toks.size() != 2) fail(lineNo_, head.column, "@snapshot takes one name");
           const std::string name(toks[1].text);
           const bool ok = std::all_of(name.begin(), name.end(), [](char c) {
             return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
           }) && name[0] != '.';
-          if (!ok) fail(lineNo, toks[1].column, "snapshot name '" + name + "' may use letters, digits, '_', '-' and '.'");
-          if (!snapshots.insert(name).second) fail(lineNo, toks[1].column, "snapshot '" + name + "' is taken twice");
+          if (!ok) fail(lineNo_, toks[1].column, "snapshot name '" + name + "' may use letters, digits, '_', '-' and '.'");
+          if (!snapshots_.insert(name).second) fail(lineNo_, toks[1].column, "snapshot '" + name + "' is taken twice");
           cmd.kind = ScriptCommand::Kind::Snapshot;
           cmd.label = name;
-          emit(script, std::move(cmd));
+          emit(script_, std::move(cmd));
           continue;
         }
         if (head.text == "@window_map") {
           // docs/gl-script-directives.md: 9 numbers (column by column) or off.
           cmd.kind = ScriptCommand::Kind::WindowMap;
           if (toks.size() == 2 && toks[1].text == "off") {
-            emit(script, std::move(cmd));
+            emit(script_, std::move(cmd));
             continue;
           }
           if (toks.size() != 10)
-            fail(lineNo, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
+            fail(lineNo_, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
           cmd.args.resize(9);
           for (std::size_t t = 1; t < toks.size(); ++t)
-            parseArg('f', toks[t], lineNo, "@window_map", static_cast<int>(t - 1), cmd.args[t - 1]);
-          emit(script, std::move(cmd));
+            parseArg('f', toks[t], lineNo_, "@window_map", static_cast<int>(t - 1), cmd.args[t - 1]);
+          emit(script_, std::move(cmd));
           continue;
         }
         if (head.text == "@count_fragments") {
           if (toks.size() != 2 || (toks[1].text != "begin" && toks[1].text != "end"))
-            fail(lineNo, head.column, "@count_fragments takes begin or end");
+            fail(lineNo_, head.column, "@count_fragments takes begin or end");
           const bool begin = toks[1].text == "begin";
-          if (begin == counting) fail(lineNo, toks[1].column, begin ? "@count_fragments begin twice without end"
+          if (begin == counting_) fail(lineNo_, toks[1].column, begin ? "@count_fragments begin twice without end"
                                                                     : "@count_fragments end without begin");
-          counting = begin;
+          counting_ = begin;
           cmd.kind = ScriptCommand::Kind::FragmentCount;
           cmd.label = std::string(toks[1].text);
-          emit(script, std::move(cmd));
+          emit(script_, std::move(cmd));
           continue;
         }
-        fail(lineNo, head.column, "unknown directive '" + std::string(head.text) +
+        fail(lineNo_, head.column, "unknown directive '" + std::string(head.text) +
                                       "' (known: @framebuffer, @profile, @pass, @snapshot, @window_map, "
                                       "@count_fragments, @expect, @expect-picture)");
       }
 
       if (mode_ == Mode::Header) return true;
-      // A script repeats a few calls (glNormal3f, glVertex3f, ...): the last
+      // A script_ repeats a few calls (glNormal3f, glVertex3f, ...): the last
       // few are tried before the table.
       const CallSpec* spec = nullptr;
       for (const CallSpec* recent : recentCalls_)
@@ -459,17 +451,17 @@ class Parser {
         recentCalls_[nextRecent_++ % recentCalls_.size()] = spec;
       if (!spec) {
         const std::string near = closestCallName(head.text);
-        fail(lineNo, head.column, "'" + std::string(head.text) + "' is not a call of the GL script call set" +
+        fail(lineNo_, head.column, "'" + std::string(head.text) + "' is not a call of the GL script call set" +
                                       (near.empty() ? "" : "; did you mean '" + near + "'?"));
       }
-      sawCall = true;
+      sawCall_ = true;
       // One command object for every call line: its argument vector keeps
       // its capacity unless a sink moved it away (a parser that stores).
       ScriptCommand& cmd = callCommand_;
       cmd.kind = ScriptCommand::Kind::Call;
       cmd.label.clear();
       cmd.probe.reset();
-      cmd.line = lineNo;
+      cmd.line = lineNo_;
       cmd.call = spec->call;
       const std::string_view kinds = spec->args;
       const size_t given = toks.size() - 1;
@@ -480,11 +472,11 @@ class Parser {
       const int endColumn = static_cast<int>(line.size()) + 1;
       if (!variadic && given != expected) {
         const int col = given > expected ? toks[expected + 1].column : endColumn;
-        fail(lineNo, col, std::string(spec->name) + " takes " + std::to_string(expected) + " argument" +
+        fail(lineNo_, col, std::string(spec->name) + " takes " + std::to_string(expected) + " argument" +
                               (expected == 1 ? "" : "s") + ", got " + std::to_string(given));
       }
       if (variadic && given < fixed + 1)
-        fail(lineNo, endColumn, std::string(spec->name) + " takes " + std::to_string(fixed) +
+        fail(lineNo_, endColumn, std::string(spec->name) + " takes " + std::to_string(fixed) +
                                     " argument(s) and then its values, got " + std::to_string(given) + " argument(s)");
       // Token t is argument t - 1: every token is one once the counts hold.
       cmd.args.resize(given);
@@ -492,25 +484,25 @@ class Parser {
       for (size_t k = 0; k < kinds.size(); ++k) {
         const char kind = kinds[k];
         if (kind == 'm') {
-          for (int j = 0; j < 16; ++j, ++t) parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
+          for (int j = 0; j < 16; ++j, ++t) parseArg('f', toks[t], lineNo_, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
         } else if (kind == 'v') {
           const int want = glVectorCount(spec->call, cmd.args[t - 2].bits);
           const size_t have = toks.size() - t;
           if (want > 0 && have != static_cast<size_t>(want))
-            fail(lineNo, have > static_cast<size_t>(want) ? toks[t + want].column : endColumn,
+            fail(lineNo_, have > static_cast<size_t>(want) ? toks[t + want].column : endColumn,
                  std::string(spec->name) + " " + std::string(toks[t - 1].text) + " takes " + std::to_string(want) +
                      " value" + (want == 1 ? "" : "s") + ", got " + std::to_string(have));
-          if (want == 0 && have > 4) fail(lineNo, toks[t + 4].column, std::string(spec->name) + " takes at most 4 values");
-          for (; t < toks.size(); ++t) parseArg('f', toks[t], lineNo, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
+          if (want == 0 && have > 4) fail(lineNo_, toks[t + 4].column, std::string(spec->name) + " takes at most 4 values");
+          for (; t < toks.size(); ++t) parseArg('f', toks[t], lineNo_, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
         } else {
-          parseArg(kind, toks[t], lineNo, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
+          parseArg(kind, toks[t], lineNo_, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
           ++t;
         }
       }
-      checkSubset(*spec, cmd, toks, lineNo);
-      if (cmd.call == GLCall::Begin) inBegin = true;
-      if (cmd.call == GLCall::End) inBegin = false;
-      emit(script, std::move(cmd));
+      checkSubset(*spec, cmd, toks, lineNo_);
+      if (cmd.call == GLCall::Begin) inBegin_ = true;
+      if (cmd.call == GLCall::End) inBegin_ = false;
+      emit(script_, std::move(cmd));
     }
     return false;
   }

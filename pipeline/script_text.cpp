@@ -5,6 +5,20 @@
 #include "pipeline/gl_script.hpp"
 
 namespace mpr {
+namespace {
+
+// The file's errors (unreadable, grown past the limit) as readScriptText
+// reports them: a ScriptError at 0:0.
+template <typename Read>
+auto asScriptError(const std::string& path, const Read& read) {
+  try {
+    return read();
+  } catch (const std::runtime_error& e) {
+    throw ScriptError(path, 0, 0, e.what());
+  }
+}
+
+}  // namespace
 
 ScriptText ScriptText::ofString(std::string_view text, std::size_t pieceBytes) {
   ScriptText t;
@@ -16,53 +30,30 @@ ScriptText ScriptText::ofString(std::string_view text, std::size_t pieceBytes) {
 ScriptText ScriptText::ofFile(const std::string& path, std::size_t pieceBytes) {
   ScriptText t;
   t.path_ = path;
-  try {
-    t.file_ = std::make_unique<InputFilePieces>(path, kMaxScriptBytes, "the script", pieceBytes);
-  } catch (const std::runtime_error& e) {
-    throw ScriptError(path, 0, 0, e.what());
-  }
+  t.file_ = asScriptError(
+      path, [&] { return std::make_unique<InputFilePieces>(path, kMaxScriptBytes, "the script", pieceBytes); });
   return t;
 }
 
 bool ScriptText::next(std::string_view& piece, bool& last) {
-  if (file_) {
-    try {
-      return file_->next(piece, last);
-    } catch (const std::runtime_error& e) {
-      throw ScriptError(path_, 0, 0, e.what());
-    }
-  }
+  if (file_) return asScriptError(path_, [&] { return file_->next(piece, last); });
   if (handedLast_) return false;
-  // Up to the last '\n' within pieceBytes_ of where the last piece ended;
-  // a longer line whole, to its '\n'; no '\n' left: the rest, last.
   const std::string_view rest = text_.substr(at_);
-  std::size_t cut = std::string_view::npos;
-  if (pieceBytes_ >= rest.size()) {
-    cut = rest.rfind('\n');
-  } else {
-    cut = rest.rfind('\n', pieceBytes_ - 1);
-    if (cut == std::string_view::npos) cut = rest.find('\n', pieceBytes_);
-  }
-  if (cut == std::string_view::npos) {
+  const std::size_t cut = wholeLinesEnd(rest, pieceBytes_);
+  if (cut == 0) {  // no '\n' left: the rest, last
     piece = rest;
     at_ = text_.size();
     last = handedLast_ = true;
     return true;
   }
-  piece = rest.substr(0, cut + 1);
-  at_ += cut + 1;
+  piece = rest.substr(0, cut);
+  at_ += cut;
   last = false;
   return true;
 }
 
 void ScriptText::rewind() {
-  if (file_) {
-    try {
-      file_->rewind();
-    } catch (const std::runtime_error& e) {
-      throw ScriptError(path_, 0, 0, e.what());
-    }
-  }
+  if (file_) asScriptError(path_, [&] { file_->rewind(); });
   at_ = 0;
   handedLast_ = false;
 }

@@ -4,7 +4,7 @@
 // bounded by the buffers, not by the script's length; issue 14, "streaming
 // scripts"), and the same text given as a string is one piece. The lines,
 // their numbers and columns do not depend on where the pieces are cut
-// (tests/pipeline/script_text_test.cpp).
+// (tests/pipeline/script_stream_test.cpp, ScriptText.*).
 #include <cstddef>
 #include <memory>
 #include <string>

@@ -104,6 +104,12 @@ std::string readInputFile(const std::string& path, std::uint64_t maxBytes, const
   return bytes;
 }
 
+std::size_t wholeLinesEnd(std::string_view bytes, std::size_t pieceBytes) {
+  std::size_t nl = pieceBytes == 0 ? std::string_view::npos : bytes.rfind('\n', pieceBytes - 1);
+  if (nl == std::string_view::npos && pieceBytes < bytes.size()) nl = bytes.find('\n', pieceBytes);
+  return nl == std::string_view::npos ? 0 : nl + 1;
+}
+
 InputFilePieces::InputFilePieces(const std::string& path, std::uint64_t maxBytes, const std::string& what,
                                  std::size_t pieceBytes)
     : what_(what), maxBytes_(maxBytes), pieceBytes_(std::max<std::size_t>(pieceBytes, 1)), buffer_(pieceBytes_) {
@@ -151,33 +157,24 @@ bool InputFilePieces::next(std::string_view& piece, bool& last) {
   // A buffer grown for a long line is a piece's size again once what it
   // holds fits.
   if (buffer_.size() > pieceBytes_ && end_ <= pieceBytes_) buffer_.resize(pieceBytes_);
-  std::size_t searched = pieceBytes_;  // no '\n' from here to the bytes read last time
   for (;;) {
     readMore();
-    const char* data = buffer_.data();
-    // The last '\n' within a piece's size: every line before it is whole.
-    std::size_t cut = 0;
-    for (std::size_t i = std::min(end_, pieceBytes_); i > 0 && cut == 0; --i)
-      if (data[i - 1] == '\n') cut = i;
-    // None: a line longer than a piece, whole to its '\n'.
-    if (cut == 0)
-      if (const void* nl = searched < end_ ? std::memchr(data + searched, '\n', end_ - searched) : nullptr)
-        cut = static_cast<std::size_t>(static_cast<const char*>(nl) - data) + 1;
+    const std::size_t cut = wholeLinesEnd(std::string_view(buffer_.data(), end_), pieceBytes_);
     if (cut > 0) {
-      piece = std::string_view(data, cut);
+      piece = std::string_view(buffer_.data(), cut);
       begin_ = cut;
       last = false;
       return true;
     }
     if (atEnd_) {
-      piece = std::string_view(data, end_);
+      piece = std::string_view(buffer_.data(), end_);
       begin_ = end_;
       last = true;
       handedLast_ = true;
       return true;
     }
-    // The line goes on past the buffer: a bigger one.
-    searched = std::max(searched, end_);
+    // The line goes on past the buffer: a bigger one (searched again from
+    // the start: doubling, the searches add up to twice the line).
     buffer_.resize(buffer_.size() * 2);
   }
 }

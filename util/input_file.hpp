@@ -19,6 +19,13 @@ std::string inputFileProblem(const std::string& path, std::uint64_t maxBytes, co
 // message (or the system's) on failure.
 std::string readInputFile(const std::string& path, std::uint64_t maxBytes, const std::string& what);
 
+// Where a piece of whole lines taken from the front of `bytes` ends: after
+// the last '\n' within the first `pieceBytes` bytes, or, when there is none
+// there, after the first '\n' (one line longer than a piece, whole); 0
+// when `bytes` holds no '\n'. The one rule of InputFilePieces and of
+// ScriptText's pieces of a string.
+std::size_t wholeLinesEnd(std::string_view bytes, std::size_t pieceBytes);
+
 // The same file read in pieces of whole lines, for a reader that goes
 // through it line by line: memory holds one piece (and the longest line),
 // not the file. Opened and checked as readInputFile does (same messages);
