@@ -56,9 +56,6 @@ FragmentFate specialised(const FragmentState& s, Framebuffer& fb, const Fragment
       f.alpha);
 }
 
-// Byte c of a colour (Rgba8 channel c) within its 32-bit word in memory.
-constexpr int channelShift(int c) { return std::endian::native == std::endian::little ? 8 * c : 8 * (3 - c); }
-
 // The same over a span, stage by stage as GL orders them (span::*, one
 // state switch per stage and span): which fragments pass each test is
 // decided for the whole span, then stencil, depth and colour are written
@@ -141,21 +138,10 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
     for (int k = 0; k < lanes; ++k) std::memcpy(&src32[k], &span.color[k], sizeof(Rgba8));
     for (int k = 0; k < n; ++k) std::memcpy(&dst32[k], &dst[k], sizeof(Rgba8));
     for (int k = n; k < lanes; ++k) dst32[k] = 0;
-    if constexpr (kBlend) {
-      span::Channels<N> sc, dc, out;
-      for (int c = 0; c < 4; ++c)
-        for (int k = 0; k < lanes; ++k) {
-          sc.c[c][k] = static_cast<std::uint16_t>((src32[k] >> channelShift(c)) & 0xFFu);
-          dc.c[c][k] = static_cast<std::uint16_t>((dst32[k] >> channelShift(c)) & 0xFFu);
-        }
-      span::blendChannels(s.blend, lanes, sc, dc, out);
-      for (int k = 0; k < lanes; ++k)
-        src32[k] = std::uint32_t{out.c[0][k]} << channelShift(0) | std::uint32_t{out.c[1][k]} << channelShift(1) |
-                   std::uint32_t{out.c[2][k]} << channelShift(2) | std::uint32_t{out.c[3][k]} << channelShift(3);
-    }
+    if constexpr (kBlend) span::blendWords<N>(s.blend, lanes, src32, dst32, src32);
     std::uint32_t keep = 0;  // the bits of each word the colour mask writes
     for (int c = 0; c < 4; ++c)
-      if (kColor == ColorWrites::All || s.colorMask[c]) keep |= 0xFFu << channelShift(c);
+      if (kColor == ColorWrites::All || s.colorMask[c]) keep |= 0xFFu << span::channelShift(c);
     for (int k = 0; k < lanes; ++k) dst32[k] = written[k] ? (dst32[k] & ~keep) | (src32[k] & keep) : dst32[k];
     for (int k = 0; k < n; ++k) std::memcpy(&dst[k], &dst32[k], sizeof(Rgba8));
   }

@@ -4,10 +4,11 @@
 // is taken once per span, outside its loop, and the loop body is plain
 // integer arithmetic on arrays the compiler can do several lanes at a time.
 // The tests and stencil operations call compare and stencilOpValue
-// themselves with the state a constant; the blend factors, on channel
-// arrays, compute lane by lane what blendFactorValue and blend
+// themselves with the state a constant; the blend factors and products, on
+// the bytes of colour words, compute what blendFactorValue and blend
 // (blend.hpp) do for one fragment. fragment_pipeline.cpp strings them
 // together in GL order.
+#include <bit>
 #include <cstdint>
 #include <type_traits>
 
@@ -46,65 +47,76 @@ template <typename Incoming, typename Stored>
   });
 }
 
-// Colours as four channel arrays (SoA), each value 0..255. Sixteen bits a
-// lane hold every intermediate of blending exactly (mulUnorm8's t + (t >> 8)
-// + 128 is at most 65407), twice the lanes of 32.
-template <int N>
-struct Channels {
-  alignas(64) std::uint16_t c[4][N];
-};
+// Byte c of a colour (Rgba8 channel c) within its 32-bit word in memory.
+constexpr int channelShift(int c) { return std::endian::native == std::endian::little ? 8 * c : 8 * (3 - c); }
 
-// out[k] = blendFactorValue(f, s_k, d_k, channel) for k < n.
-template <int N>
-[[gnu::always_inline]] inline void blendFactors(BlendFactor f, int channel, int n, const Channels<N>& s,
-                                                const Channels<N>& d, std::uint16_t* out) {
-  const std::uint16_t* sc = s.c[channel];
-  const std::uint16_t* dc = d.c[channel];
-  const std::uint16_t* sa = s.c[3];
-  const std::uint16_t* da = d.c[3];
+// Colours are blended as the bytes of their words in memory order: byte
+// 4k + c of an array of words is channel c of lane k (Rgba8's order), so
+// no loop reorders channels, and a factor that is an alpha is that byte
+// copied to the word's four.
+[[gnu::always_inline]] inline std::uint32_t alphaInEveryByte(std::uint32_t word) {
+  return ((word >> channelShift(3)) & 0xFFu) * 0x01010101u;
+}
+
+// out[k] = the four bytes blendFactorValue(f, s_k, d_k, c) for c = 0..3, k < n.
+// 255 - x of a byte is its complement.
+[[gnu::always_inline]] inline void blendFactorWords(BlendFactor f, int n, const std::uint32_t* s,
+                                                    const std::uint32_t* d, std::uint32_t* out) {
   switch (f) {
     case BlendFactor::Zero: for (int k = 0; k < n; ++k) out[k] = 0; return;
-    case BlendFactor::One: for (int k = 0; k < n; ++k) out[k] = 255; return;
-    case BlendFactor::SrcColor: for (int k = 0; k < n; ++k) out[k] = sc[k]; return;
-    case BlendFactor::OneMinusSrcColor: for (int k = 0; k < n; ++k) out[k] = static_cast<std::uint16_t>(255 - sc[k]); return;
-    case BlendFactor::DstColor: for (int k = 0; k < n; ++k) out[k] = dc[k]; return;
-    case BlendFactor::OneMinusDstColor: for (int k = 0; k < n; ++k) out[k] = static_cast<std::uint16_t>(255 - dc[k]); return;
-    case BlendFactor::SrcAlpha: for (int k = 0; k < n; ++k) out[k] = sa[k]; return;
-    case BlendFactor::OneMinusSrcAlpha: for (int k = 0; k < n; ++k) out[k] = static_cast<std::uint16_t>(255 - sa[k]); return;
-    case BlendFactor::DstAlpha: for (int k = 0; k < n; ++k) out[k] = da[k]; return;
-    case BlendFactor::OneMinusDstAlpha: for (int k = 0; k < n; ++k) out[k] = static_cast<std::uint16_t>(255 - da[k]); return;
+    case BlendFactor::One: for (int k = 0; k < n; ++k) out[k] = 0xFFFFFFFFu; return;
+    case BlendFactor::SrcColor: for (int k = 0; k < n; ++k) out[k] = s[k]; return;
+    case BlendFactor::OneMinusSrcColor: for (int k = 0; k < n; ++k) out[k] = ~s[k]; return;
+    case BlendFactor::DstColor: for (int k = 0; k < n; ++k) out[k] = d[k]; return;
+    case BlendFactor::OneMinusDstColor: for (int k = 0; k < n; ++k) out[k] = ~d[k]; return;
+    case BlendFactor::SrcAlpha: for (int k = 0; k < n; ++k) out[k] = alphaInEveryByte(s[k]); return;
+    case BlendFactor::OneMinusSrcAlpha: for (int k = 0; k < n; ++k) out[k] = ~alphaInEveryByte(s[k]); return;
+    case BlendFactor::DstAlpha: for (int k = 0; k < n; ++k) out[k] = alphaInEveryByte(d[k]); return;
+    case BlendFactor::OneMinusDstAlpha: for (int k = 0; k < n; ++k) out[k] = ~alphaInEveryByte(d[k]); return;
     case BlendFactor::SrcAlphaSaturate:
-      if (channel == 3) {
-        for (int k = 0; k < n; ++k) out[k] = 255;
-      } else {
-        for (int k = 0; k < n; ++k) {
-          const std::uint16_t inv = static_cast<std::uint16_t>(255 - da[k]);
-          out[k] = sa[k] < inv ? sa[k] : inv;
-        }
+      // (f, f, f, 1) with f = min(As, 1 - Ad).
+      for (int k = 0; k < n; ++k) {
+        const std::uint32_t sa = (s[k] >> channelShift(3)) & 0xFFu, inv = 255u - ((d[k] >> channelShift(3)) & 0xFFu);
+        out[k] = (sa < inv ? sa : inv) * 0x01010101u | 0xFFu << channelShift(3);
       }
       return;
   }
   for (int k = 0; k < n; ++k) out[k] = 0;
 }
 
-// out = blend(b, s, d) lane by lane (blend.hpp).
+// out = blend(b, s, d) for n words (blend.hpp), byte by byte in sixteen
+// bits, which hold every intermediate exactly (mulUnorm8's t + (t >> 8) + 128
+// is at most 65407). n is at most N; out may be s or d.
 template <int N>
-[[gnu::always_inline]] inline void blendChannels(const BlendState& b, int n, const Channels<N>& s,
-                                                 const Channels<N>& d, Channels<N>& out) {
-  alignas(64) std::uint16_t fs[N], fd[N];
-  // mulUnorm8 in sixteen bits.
-  const auto mul = [](std::uint16_t a, std::uint16_t b) {
-    const std::uint16_t t = static_cast<std::uint16_t>(a * b);
-    return static_cast<std::uint16_t>(static_cast<std::uint16_t>(t + (t >> 8) + 128) >> 8);
-  };
-  for (int c = 0; c < 4; ++c) {
-    blendFactors(b.src, c, n, s, d, fs);
-    blendFactors(b.dst, c, n, s, d, fd);
-    for (int k = 0; k < n; ++k) {
-      const std::uint16_t v = static_cast<std::uint16_t>(mul(s.c[c][k], fs[k]) + mul(d.c[c][k], fd[k]));
-      out.c[c][k] = v > 255 ? 255 : v;
+[[gnu::always_inline]] inline void blendWords(const BlendState& b, int n, const std::uint32_t* s,
+                                              const std::uint32_t* d, std::uint32_t* out) {
+  alignas(64) std::uint32_t fs[N], fd[N], result[N];
+  const int bytes = 4 * n;
+  const auto* sb = reinterpret_cast<const std::uint8_t*>(s);
+  const auto* db = reinterpret_cast<const std::uint8_t*>(d);
+  auto* rb = reinterpret_cast<std::uint8_t*>(result);
+  if (b.src == BlendFactor::One && b.dst == BlendFactor::One) {
+    // mulUnorm8(x, 255) is x: the sum, saturated.
+    for (int i = 0; i < bytes; ++i) {
+      const std::uint16_t v = static_cast<std::uint16_t>(sb[i] + db[i]);
+      rb[i] = static_cast<std::uint8_t>(v > 255 ? 255 : v);
+    }
+  } else {
+    blendFactorWords(b.src, n, s, d, fs);
+    blendFactorWords(b.dst, n, s, d, fd);
+    const auto* fsb = reinterpret_cast<const std::uint8_t*>(fs);
+    const auto* fdb = reinterpret_cast<const std::uint8_t*>(fd);
+    // mulUnorm8 in sixteen bits.
+    const auto mul = [](std::uint16_t a, std::uint16_t f) {
+      const std::uint16_t t = static_cast<std::uint16_t>(a * f);
+      return static_cast<std::uint16_t>(static_cast<std::uint16_t>(t + (t >> 8) + 128) >> 8);
+    };
+    for (int i = 0; i < bytes; ++i) {
+      const std::uint16_t v = static_cast<std::uint16_t>(mul(sb[i], fsb[i]) + mul(db[i], fdb[i]));
+      rb[i] = static_cast<std::uint8_t>(v > 255 ? 255 : v);
     }
   }
+  for (int k = 0; k < n; ++k) out[k] = result[k];
 }
 
 }  // namespace mpr::span
