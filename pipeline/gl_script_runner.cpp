@@ -31,8 +31,12 @@ void ScriptExecutor::execute(const ScriptCommand& cmd) {
   // merging blocks, GLContext::drawQuadsPiece) land at the call that closes it.
   switch (cmd.kind) {
     case ScriptCommand::Kind::WindowMap:
-    case ScriptCommand::Kind::FragmentCount:
       dispatch(*emulator_, cmd);
+      break;
+    case ScriptCommand::Kind::FragmentCount:
+      // Nothing in a replay reads the count: the decisions the render took
+      // from it are already the calls that follow. Taking it would wait for
+      // the row threads to finish every queued draw, twice per count.
       break;
     case ScriptCommand::Kind::Pass:
       if (hooks_.onPass) hooks_.onPass(cmd);
