@@ -13,7 +13,11 @@ namespace mpr {
 namespace {
 
 constexpr std::size_t kBatchCommands = 1024;  // per hand-over: a lock per thousand commands
-constexpr std::size_t kBatchesInFlight = 4;   // parsed ahead at most: a few thousand commands
+constexpr std::size_t kBatchesInFlight = 16;  // parsed ahead at most: some sixteen thousand commands
+// A reader that found the queue full sleeps until it is down to this many:
+// then it parses a run of batches, not one per wake-up (on two cores shared
+// with the row threads, each wake-up may wait for a time slice).
+constexpr std::size_t kReaderResumesAt = kBatchesInFlight / 2;
 
 // A batch's slots are reused from batch to batch (swapped with the
 // parser's command, so each keeps its argument vector's capacity): no
@@ -53,7 +57,8 @@ void streamScriptAhead(std::string_view text, const Script& header, const std::f
 
 void streamScriptAhead(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
   std::mutex mutex;
-  std::condition_variable changed;
+  std::condition_variable readerMayGo, batchReady;
+  bool readerWaiting = false, callerWaiting = false;
   std::deque<Batch> full;   // parsed, in order
   std::vector<Batch> spare;  // handed back by the caller's thread
   bool finished = false, stop = false;
@@ -63,7 +68,11 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
     Batch batch;
     auto handOver = [&] {
       std::unique_lock lock(mutex);
-      changed.wait(lock, [&] { return full.size() < kBatchesInFlight || stop; });
+      if (full.size() >= kBatchesInFlight && !stop) {
+        readerWaiting = true;
+        readerMayGo.wait(lock, [&] { return full.size() <= kReaderResumesAt || stop; });
+        readerWaiting = false;
+      }
       if (stop) throw ReaderStopped{};
       full.push_back(std::move(batch));
       batch = Batch{};
@@ -71,7 +80,7 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
         batch = std::move(spare.back());
         spare.pop_back();
       }
-      changed.notify_all();
+      if (callerWaiting) batchReady.notify_one();
     };
     try {
       streamScript(text, header, [&](ScriptCommand&& c) {
@@ -92,7 +101,7 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
     }
     std::lock_guard lock(mutex);
     finished = true;
-    changed.notify_all();
+    batchReady.notify_one();
   });
 
   try {
@@ -100,11 +109,15 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
       Batch batch;
       {
         std::unique_lock lock(mutex);
-        changed.wait(lock, [&] { return !full.empty() || finished; });
+        if (full.empty() && !finished) {
+          callerWaiting = true;
+          batchReady.wait(lock, [&] { return !full.empty() || finished; });
+          callerWaiting = false;
+        }
         if (full.empty()) break;
         batch = std::move(full.front());
         full.pop_front();
-        changed.notify_all();
+        if (readerWaiting && full.size() <= kReaderResumesAt) readerMayGo.notify_one();
       }
       for (std::size_t i = 0; i < batch.size; ++i) {
         // The parser wrote these on another core: a command's arguments,
@@ -122,7 +135,7 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
     {
       std::lock_guard lock(mutex);
       stop = true;
-      changed.notify_all();
+      readerMayGo.notify_one();
     }
     reader.join();
     throw;
