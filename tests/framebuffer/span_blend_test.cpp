@@ -1,7 +1,7 @@
 // The span pipeline's blending (span::blendWords, on the bytes of colour
 // words) against blend() (blend.hpp) one fragment at a time: for every pair
 // of the eleven factors, every pair of source and destination values of
-// each channel, each with every pair of alphas, the same four bytes.
+// each channel and every pair of alphas, the same four bytes.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -30,8 +30,8 @@ Rgba8 colorOf(std::uint32_t w) {
 
 // Case i of 65536: a = i mod 256, b = i / 256. Channel 0 takes (a, b),
 // channel 1 (b, a), channel 2 (255 - a, a ^ b) and the alphas (b ^ 0x5A, a):
-// every pair of values in each channel, and every pair of alphas with
-// every value of channel 0.
+// every pair of values in each channel, every pair of alphas, and every
+// source alpha with every value of channel 0.
 Rgba8 sourceOf(int i) {
   const auto a = static_cast<std::uint8_t>(i & 0xFF), b = static_cast<std::uint8_t>(i >> 8);
   return {a, b, static_cast<std::uint8_t>(255 - a), static_cast<std::uint8_t>(b ^ 0x5A)};
