@@ -25,6 +25,14 @@ constexpr int kN = FragmentSpan::kCapacity;
   return static_cast<std::uint32_t>(static_cast<std::int32_t>((positive * 255.0f + 8388608.0f) - 8388608.0f));
 }
 
+// The span loops below run a block of kBlock lanes at a time with the
+// block's width a constant, every stage of a block before the next block:
+// its values stay in vector registers, and a span of a few pixels (most
+// spans of a scene's triangles) costs one block, not one pass per stage,
+// each with the set-up and remainder a loop of unknown length gets.
+constexpr int kBlock = 8;
+static_assert(kN % kBlock == 0);
+
 // The depths as llvmpipe quantises them to a unorm buffer: std::clamp(z, 0,
 // 1) (NaN, -0 and below to 0, 1 and above to 1) times the float maximum, a
 // single-precision product, rounded to nearest even.
@@ -40,36 +48,44 @@ constexpr int kN = FragmentSpan::kCapacity;
   }
 }
 
-// The colour of a fragment from its interpolated channels: fog, the clamp
-// (glm::clamp(c, 0, 1): std::min and std::max, NaN kept), the bytes.
-[[gnu::always_inline]] inline void finishColor(const FogState* fog, float (&channel)[5][kN], int n, FragmentSpan& out) {
+// The colours and alphas of a block of fragments from their interpolated
+// channels: fog, the clamp (glm::clamp(c, 0, 1): std::min and
+// std::max, NaN kept), the bytes.
+[[gnu::always_inline]] inline void finishBlock(const FogState* fog, float (&channel)[5][kBlock], Rgba8* color,
+                                               float* alpha) {
   if (fog) {
     // Per fragment (fogFactor may call exp); GL_FASTEST takes the coordinate as the factor.
-    for (int k = 0; k < n; ++k) {
-      const float factor = fog->perFragment ? fogFactor(*fog, channel[4][k]) : std::clamp(channel[4][k], 0.0f, 1.0f);
-      const Vec4 fogged =
-          applyFog(*fog, factor, Vec4(channel[0][k], channel[1][k], channel[2][k], channel[3][k]));
-      channel[0][k] = fogged.r;
-      channel[1][k] = fogged.g;
-      channel[2][k] = fogged.b;
-      channel[3][k] = fogged.a;
+    for (int j = 0; j < kBlock; ++j) {
+      const float factor = fog->perFragment ? fogFactor(*fog, channel[4][j]) : std::clamp(channel[4][j], 0.0f, 1.0f);
+      const Vec4 fogged = applyFog(*fog, factor, Vec4(channel[0][j], channel[1][j], channel[2][j], channel[3][j]));
+      channel[0][j] = fogged.r;
+      channel[1][j] = fogged.g;
+      channel[2][j] = fogged.b;
+      channel[3][j] = fogged.a;
     }
   }
-  // Clamped as glm::clamp(c, 0, 1) (NaN kept), then converted.
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < n; ++k) channel[i][k] = std::min(std::max(channel[i][k], 0.0f), 1.0f);
-  // Packed four bytes to a word (Rgba8's order in memory), so the loop stays on lanes.
+  // Clamped as glm::clamp(c, 0, 1) (NaN kept), then converted and packed
+  // four bytes to a word (Rgba8's order in memory).
   constexpr bool kLittle = std::endian::native == std::endian::little;
-  alignas(64) std::uint32_t bytes[4][kN], packed[kN];
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < n; ++k) bytes[i][k] = unorm8(channel[i][k]);
-  for (int k = 0; k < n; ++k) {
-    packed[k] = bytes[0][k] << (kLittle ? 0 : 24) | bytes[1][k] << (kLittle ? 8 : 16) |
-                bytes[2][k] << (kLittle ? 16 : 8) | bytes[3][k] << (kLittle ? 24 : 0);
-    out.alpha[k] = channel[3][k];
+  for (int j = 0; j < kBlock; ++j) {
+    float c[4];
+    for (int i = 0; i < 4; ++i) c[i] = std::min(std::max(channel[i][j], 0.0f), 1.0f);
+    const std::uint32_t packed = unorm8(c[0]) << (kLittle ? 0 : 24) | unorm8(c[1]) << (kLittle ? 8 : 16) |
+                                 unorm8(c[2]) << (kLittle ? 16 : 8) | unorm8(c[3]) << (kLittle ? 24 : 0);
+    alpha[j] = c[3];
+    std::memcpy(&color[j], &packed, sizeof(Rgba8));
   }
-  // A loop, not a memcpy of n words (a library call per span; see CMakeLists.txt).
-  for (int k = 0; k < n; ++k) std::memcpy(&out.color[k], &packed[k], sizeof(Rgba8));
+}
+
+// finishBlock over `lanes` (a multiple of kBlock) of whole-span channels.
+[[gnu::always_inline]] inline void finishColor(const FogState* fog, const float (&channel)[5][kN], int lanes,
+                                               FragmentSpan& out) {
+  for (int base = 0; base < lanes; base += kBlock) {
+    float block[5][kBlock];
+    for (int i = 0; i < (fog ? 5 : 4); ++i)
+      for (int j = 0; j < kBlock; ++j) block[i][j] = channel[i][base + j];
+    finishBlock(fog, block, &out.color[base], &out.alpha[base]);
+  }
 }
 
 // Whether weights w0, w1, w2 (summing to `sum`, or its magnitude) are
@@ -105,32 +121,60 @@ constexpr int kN = FragmentSpan::kCapacity;
   return holds != 0;
 }
 
-// The channels of out.count pixels from (out.x, out.y) as llvmpipe's
-// fragment shader interpolates them (ChannelPlanes), then finished.
-[[gnu::always_inline]] inline void llvmpipeColor(const ChannelPlanes& p, int fbHeight, const FogState* fog,
-                                                 FragmentSpan& out) {
-  const int n = paddedLanes(out.count);
-  const int channels = fog ? 5 : 4;
-  alignas(64) float channel[5][kN];
-  if (p.allUniform) {
-    for (int i = 0; i < channels; ++i)
-      for (int k = 0; k < n; ++k) channel[i][k] = p.uniformValue[i];
-    return finishColor(fog, channel, n, out);
-  }
+// Where llvmpipeBlocks takes the fragments' depth from: none (0), one
+// plane of llvmpipe's, or the span as it is (stored before).
+enum class BlockDepth { Zero, Plane, Stored };
+
+// Depth (BlockDepth) and the channels as llvmpipe's fragment shader
+// interpolates them (ChannelPlanes), then finished, for out.count pixels
+// from (out.x, out.y), a block at a time. `planes` is null where the
+// fragments carry no colour.
+[[gnu::always_inline]] inline void llvmpipeBlocks(BlockDepth depth, float a0, float dzdx, float dzdy, float depthMax,
+                                                  const ChannelPlanes* planes, int fbHeight, const FogState* fog,
+                                                  FragmentSpan& out) {
+  const int lanes = paddedLanes(out.count);
   const float yDown = static_cast<float>(fbHeight - 1 - out.y);
-  alignas(64) float x[kN], oow[kN];
-  for (int k = 0; k < n; ++k) x[k] = static_cast<float>(out.x + k);
-  // lp_build_rcp: a division, not RCPPS.
-  for (int k = 0; k < n; ++k) oow[k] = 1.0f / p.oow.at(x[k], yDown);
-  for (int i = 0; i < channels; ++i) {
-    if (p.uniform[i]) {
-      for (int k = 0; k < n; ++k) channel[i][k] = p.uniformValue[i];
+  // Every channel the same at every pixel: finished once (fog included,
+  // its coordinate uniform too), the same word and alpha for each fragment.
+  std::uint32_t uniformWords[kBlock] = {};
+  float uniformAlphas[kBlock] = {};
+  static_assert(sizeof uniformWords == kBlock * sizeof(Rgba8));
+  if (planes && planes->allUniform) {
+    float channel[5][kBlock];
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < kBlock; ++j) channel[i][j] = planes->uniformValue[i];
+    Rgba8 colors[kBlock];
+    finishBlock(fog, channel, colors, uniformAlphas);
+    std::memcpy(uniformWords, colors, sizeof uniformWords);
+  }
+  for (int base = 0; base < lanes; base += kBlock) {
+    float x[kBlock];
+    for (int j = 0; j < kBlock; ++j) x[j] = static_cast<float>(out.x + base + j);
+    if (depth == BlockDepth::Plane)
+      for (int j = 0; j < kBlock; ++j)
+        out.depth[base + j] = windowDepthToWord(LlvmpipeDepth::planeAt(a0, dzdx, dzdy, x[j], yDown), depthMax);
+    else if (depth == BlockDepth::Zero)
+      for (int j = 0; j < kBlock; ++j) out.depth[base + j] = 0u;
+    if (!planes || planes->allUniform) {
+      // No colour (words of zero), or one finished colour for every
+      // fragment: a block's words and alphas stored whole.
+      std::memcpy(&out.color[base], uniformWords, sizeof uniformWords);
+      std::memcpy(&out.alpha[base], uniformAlphas, sizeof uniformAlphas);
       continue;
     }
-    const PlaneCoefficients c = p.channel[i];
-    for (int k = 0; k < n; ++k) channel[i][k] = c.at(x[k], yDown) * oow[k];
+    const ChannelPlanes& p = *planes;
+    // lp_build_rcp: a division, not RCPPS.
+    float oow[kBlock], channel[5][kBlock];
+    for (int j = 0; j < kBlock; ++j) oow[j] = 1.0f / p.oow.at(x[j], yDown);
+    // All five channels (the fog coordinate's plane is set up with or
+    // without fog): a count known here unrolls the loop.
+#pragma GCC unroll 5
+    for (int i = 0; i < 5; ++i) {
+      const PlaneCoefficients c = p.channel[i];
+      for (int j = 0; j < kBlock; ++j) channel[i][j] = p.uniform[i] ? p.uniformValue[i] : c.at(x[j], yDown) * oow[j];
+    }
+    finishBlock(fog, channel, &out.color[base], &out.alpha[base]);
   }
-  finishColor(fog, channel, n, out);
 }
 
 }  // namespace
@@ -164,9 +208,14 @@ void setUpChannelPlanes(const LlvmpipeDepth::Triangle& t, int colorOffset, bool 
   }
 }
 
-MPR_CPU_CLONES
-void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, const std::array<std::int64_t, 3>& stepX,
-               FragmentSpan& out) {
+namespace {
+
+// shadeSpan where the weights or several depth planes are needed (a
+// triangle MPR's clipper cut, or under a window map): its own function, so
+// that the common case pays nothing for its arrays.
+MPR_CPU_CLONES [[gnu::noinline]]
+void shadeExactSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w,
+                    const std::array<std::int64_t, 3>& stepX, FragmentSpan& out) {
   const int n = out.count;
   const bool flat = t.flatColor && flatColorHolds(t, out);
   // Barycentric weights of the pixel centres (colour and the window map's
@@ -219,7 +268,9 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
   }
   storeDepths(z, depthLanes, t.depthMax, out);
   if (!t.color) return noColor(out);
-  if (t.llvmpipeColor) return llvmpipeColor(t.channels, t.fbHeight, t.fog, out);
+  // llvmpipe's colour planes with several depth planes (a clipped polygon's).
+  if (t.llvmpipeColor)
+    return llvmpipeBlocks(BlockDepth::Stored, 0.0f, 0.0f, 0.0f, 0.0f, &t.channels, t.fbHeight, t.fog, out);
   // Perspective-correct: interpolate attr/w and 1/w.
   alignas(64) float channel[5][kN];
   const int channels = t.fog ? 5 : 4;
@@ -254,22 +305,29 @@ void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, c
     const double a0 = t.attr[0][i], a1 = t.attr[1][i], a2 = t.attr[2][i];
     for (int k = 0; k < n; ++k) channel[i][k] = static_cast<float>((b0[k] * a0 + b1[k] * a1 + b2[k] * a2) * inv[k]);
   }
-  finishColor(t.fog, channel, n, out);
+  // The lanes past the count are finished too (whole blocks), from zeros.
+  for (int i = 0; i < channels; ++i)
+    for (int k = n; k < lanes; ++k) channel[i][k] = 0.0f;
+  finishColor(t.fog, channel, lanes, out);
+}
+
+}  // namespace
+
+MPR_CPU_CLONES
+void shadeSpan(const TriangleShading& t, const std::array<std::int64_t, 3>& w, const std::array<std::int64_t, 3>& stepX,
+               FragmentSpan& out) {
+  // llvmpipe's planes, or no colour, with at most one depth plane: a block at a time.
+  if ((!t.color || t.llvmpipeColor) &&
+      (t.depth == TriangleShading::Depth::None || t.depth == TriangleShading::Depth::OnePlane))
+    return llvmpipeBlocks(t.depth == TriangleShading::Depth::OnePlane ? BlockDepth::Plane : BlockDepth::Zero, t.a0,
+                          t.dzdx, t.dzdy, t.depthMax, t.color ? &t.channels : nullptr, t.fbHeight, t.fog, out);
+  shadeExactSpan(t, w, stepX, out);
 }
 
 MPR_CPU_CLONES
 void shadeFanSpan(const FanShading& t, FragmentSpan& out) {
-  const int n = paddedLanes(out.count);
-  alignas(64) float z[kN];
-  if (t.depth) {
-    const float yDown = static_cast<float>(t.fbHeight - 1 - out.y);
-    for (int k = 0; k < n; ++k) z[k] = LlvmpipeDepth::planeAt(t.a0, t.dzdx, t.dzdy, static_cast<float>(out.x + k), yDown);
-  } else {
-    for (int k = 0; k < n; ++k) z[k] = 0.0f;
-  }
-  storeDepths(z, n, t.depthMax, out);
-  if (!t.color) return noColor(out);
-  llvmpipeColor(t.planes, t.fbHeight, t.fog, out);
+  llvmpipeBlocks(t.depth ? BlockDepth::Plane : BlockDepth::Zero, t.a0, t.dzdx, t.dzdy, t.depthMax,
+                 t.color ? &t.planes : nullptr, t.fbHeight, t.fog, out);
 }
 
 void decideFlatColor(TriangleShading& t) {
