@@ -27,6 +27,7 @@
 #include "pipeline/span_shading.hpp"
 #include "util/vecmath.hpp"
 #include "util/row_queue.hpp"
+#include "util/vector_pool.hpp"
 
 namespace mpr {
 
@@ -420,6 +421,10 @@ class GLContext : private detail::RowThreads {
   std::vector<DeferredTriangle> deferred_;  // in submission order
   std::vector<ClippedTriangleRows> deferredClipped_;
   std::vector<FanTriangleRows> deferredFan_;
+  // deferredClipped_'s storage after its draw has run, for a later draw
+  // (shared: the row thread that ran the draw last hands it back).
+  std::shared_ptr<VectorPool<ClippedTriangleRows>> spentClipped_ =
+      std::make_shared<VectorPool<ClippedTriangleRows>>(4);
 
   // rasterization state
   bool cullEnabled_ = false;
