@@ -205,13 +205,7 @@ class Parser {
     if (kind == 'n') kind = 'i';
     a.number = 0.0;
     a.bits = 0;
-    a.column = tok.column;
-    // The text as written, kept with a stored command only (a checking pass
-    // keeps none; a streamed command is executed, and nothing executing it
-    // reads the text: a string per argument, 7 % of reading a trace);
-    // messages quote the token itself.
-    if (mode_ == Mode::Store) a.text.assign(tok.text);
-    else a.text.clear();
+    a.column = tok.column;  // messages quote the token itself
     const std::string_view text = tok.text;
     // Built only for a message: an argument that parses costs no string.
     const auto where = [&] { return "argument " + std::to_string(index + 1) + " of " + std::string(callName); };

@@ -5,6 +5,9 @@
 
 #include <filesystem>
 #include <set>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "pipeline/gl_script.hpp"
 
@@ -26,11 +29,20 @@ Corpus loadCorpus() {
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".gls") continue;
     const Script s = loadScript(entry.path().string());
+    std::vector<std::string_view> lines;  // the text's lines, the first at [0]
+    for (std::string_view rest = s.text;;) {
+      const std::size_t end = rest.find('\n');
+      lines.push_back(rest.substr(0, end));
+      if (end == std::string_view::npos) break;
+      rest.remove_prefix(end + 1);
+    }
     for (const ScriptCommand& cmd : s.commands) {
       if (cmd.kind != ScriptCommand::Kind::Call) continue;
       c.calls.insert(cmd.call);
+      // An argument written as a GL_ name (lines and columns count from 1).
+      const std::string_view line = lines.at(static_cast<std::size_t>(cmd.line - 1));
       for (const ScriptArg& a : cmd.args)
-        if (a.text.rfind("GL_", 0) == 0) c.enums.insert(a.bits);
+        if (line.substr(static_cast<std::size_t>(a.column - 1)).starts_with("GL_")) c.enums.insert(a.bits);
     }
   }
   return c;
