@@ -147,21 +147,29 @@ enum class BlockDepth { Zero, Plane, Stored };
     finishBlock(fog, channel, colors, uniformAlphas);
     std::memcpy(uniformWords, colors, sizeof uniformWords);
   }
-  for (int base = 0; base < lanes; base += kBlock) {
-    float x[kBlock];
+  // The block's pixel columns and, unless stored before, depths.
+  const auto columnsAndDepth = [&](int base, float (&x)[kBlock]) {
     for (int j = 0; j < kBlock; ++j) x[j] = static_cast<float>(out.x + base + j);
     if (depth == BlockDepth::Plane)
       for (int j = 0; j < kBlock; ++j)
         out.depth[base + j] = windowDepthToWord(LlvmpipeDepth::planeAt(a0, dzdx, dzdy, x[j], yDown), depthMax);
     else if (depth == BlockDepth::Zero)
       for (int j = 0; j < kBlock; ++j) out.depth[base + j] = 0u;
-    if (!planes || planes->allUniform) {
-      // No colour (words of zero), or one finished colour for every
-      // fragment: a block's words and alphas stored whole.
+  };
+  if (!planes || planes->allUniform) {
+    // No colour (words of zero), or one finished colour for every
+    // fragment: a block's words and alphas stored whole.
+    for (int base = 0; base < lanes; base += kBlock) {
+      float x[kBlock];
+      columnsAndDepth(base, x);
       std::memcpy(&out.color[base], uniformWords, sizeof uniformWords);
       std::memcpy(&out.alpha[base], uniformAlphas, sizeof uniformAlphas);
-      continue;
     }
+    return;
+  }
+  for (int base = 0; base < lanes; base += kBlock) {
+    float x[kBlock];
+    columnsAndDepth(base, x);
     const ChannelPlanes& p = *planes;
     // lp_build_rcp: a division, not RCPPS.
     float oow[kBlock], channel[5][kBlock];
