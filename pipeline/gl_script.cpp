@@ -22,6 +22,7 @@
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/script_line.hpp"
+#include "pipeline/short_decimal.hpp"
 #include "pipeline/script_text.hpp"
 #include "util/spelling.hpp"
 
@@ -86,59 +87,6 @@ std::string closestCallName(std::string_view name) {
 }
 
 using Token = ScriptToken;
-
-// A plain decimal, [-]digits[.digits][(e|E)[+|-]digits] with at most 15
-// significant digits written, read the way from_chars reads it but without
-// its general machinery (most numbers a trace holds): the digits are an
-// integer w below 10^15 < 2^53, and where the decimal exponent q (the
-// exponent less the fraction's length) is within [-22, 22], w and 10^|q| are
-// exact doubles and w * 10^q or w / 10^-q, one IEEE operation, is the
-// correctly rounded value from_chars gives (Clinger's fast path). Anything
-// else is left to the general reading.
-// (A bool and an out-parameter, not std::optional<double>: the optional's
-// flag and value, written apart and read back as one, stalled the store
-// forwarding of every number.)
-bool plainShortDecimal(std::string_view t, double& value) {
-  static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  std::size_t i = 0;
-  const bool negative = !t.empty() && t[0] == '-';
-  if (negative) i = 1;
-  std::uint64_t w = 0;
-  int digits = 0, fraction = 0;
-  bool point = false;
-  for (; i < t.size(); ++i) {
-    const char c = t[i];
-    if (c >= '0' && c <= '9') {
-      if (++digits > 15) return false;
-      w = w * 10 + static_cast<std::uint64_t>(c - '0');
-      fraction += point;
-    } else if (c == '.' && !point) {
-      point = true;
-    } else {
-      break;
-    }
-  }
-  if (digits == 0) return false;
-  int exponent = 0;
-  if (i < t.size()) {
-    if (t[i] != 'e' && t[i] != 'E') return false;
-    ++i;
-    const bool negativeExponent = i < t.size() && t[i] == '-';
-    if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
-    if (i == t.size() || t.size() - i > 3) return false;  // no digits, or past the fast path anyway
-    for (; i < t.size(); ++i) {
-      if (t[i] < '0' || t[i] > '9') return false;
-      exponent = exponent * 10 + (t[i] - '0');
-    }
-    if (negativeExponent) exponent = -exponent;
-  }
-  const int q = exponent - fraction;
-  if (q < -22 || q > 22) return false;
-  const double v = q >= 0 ? static_cast<double>(w) * kPowers[q] : static_cast<double>(w) / kPowers[-q];
-  value = negative ? -v : v;
-  return true;
-}
 
 class Parser {
  public:
@@ -264,13 +212,24 @@ class Parser {
         return;
       }
       default: {  // f, m, v
-        if (plainShortDecimal(tok.text, a.number)) return;
+        if (shortDecimalAt(tok.text, pieceEnd_, a.number)) return;
         const auto v = parseNumber(tok.text);
         if (!v) fail(line, tok.column, where() + " is a number: expected a C literal, got '" + std::string(text) + "'");
         a.number = *v;
         return;
       }
     }
+  }
+
+  // A number argument ('f'): a short plain decimal (most of a trace's
+  // numbers) read in line, anything else (a GL_ name, an error) by parseArg.
+  void parseNumberArg(const Token& tok, std::string_view callName, int index, ScriptArg& a) const {
+    if (shortDecimalAt(tok.text, pieceEnd_, a.number)) {
+      a.bits = 0;
+      a.column = tok.column;
+      return;
+    }
+    parseArg('f', tok, lineNo_, callName, index, a);
   }
 
   // The whole text, read from its start a piece at a time (a parser parses once).
@@ -297,6 +256,7 @@ class Parser {
       if (script_.commands.capacity() < script_.commands.size() + lines)
         script_.commands.reserve(std::max(script_.commands.size() + lines, 2 * script_.commands.capacity()));
     }
+    pieceEnd_ = text.data() + text.size();
     size_t pos = 0;
     // A piece before the last ends in '\n': no line starts at its end.
     while (lastPiece ? pos <= text.size() : pos < text.size()) {
@@ -328,7 +288,9 @@ class Parser {
         }
         continue;
       }
-      if (head.text == "@expect" || head.text == "@expect-picture") {
+      // Directives start with '@' (a call line, most of a script, skips
+      // their comparisons).
+      if (head.text[0] == '@' && (head.text == "@expect" || head.text == "@expect-picture")) {
         if (inBegin_) fail(lineNo_, head.column, std::string(head.text) + " between glBegin and glEnd");
         PendingProbe pp = head.text == "@expect" ? parseExpect(toks, lineNo_) : parseExpectPicture(toks, lineNo_);
         pp.command = script_.commands.size();
@@ -349,8 +311,8 @@ class Parser {
         else picture_ = std::move(pp);
         continue;
       }
-      if (head.text == "@end") fail(lineNo_, head.column, "@end without @expect-picture");
       if (head.text[0] == '@') {
+        if (head.text == "@end") fail(lineNo_, head.column, "@end without @expect-picture");
         ScriptCommand cmd;
         cmd.line = lineNo_;
         if (head.text == "@framebuffer") {
@@ -440,7 +402,10 @@ class Parser {
       // few are tried before the table.
       const CallSpec* spec = nullptr;
       for (const CallSpec* recent : recentCalls_)
-        if (recent && sameName(recent->name, head.text)) spec = recent;
+        if (recent && sameName(recent->name, head.text)) {
+          spec = recent;
+          break;
+        }
       if (!spec && (spec = findCall(head.text)))
         recentCalls_[nextRecent_++ % recentCalls_.size()] = spec;
       if (!spec) {
@@ -478,7 +443,7 @@ class Parser {
       for (size_t k = 0; k < kinds.size(); ++k) {
         const char kind = kinds[k];
         if (kind == 'm') {
-          for (int j = 0; j < 16; ++j, ++t) parseArg('f', toks[t], lineNo_, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
+          for (int j = 0; j < 16; ++j, ++t) parseNumberArg(toks[t], spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
         } else if (kind == 'v') {
           const int want = glVectorCount(spec->call, cmd.args[t - 2].bits);
           const size_t have = toks.size() - t;
@@ -487,7 +452,10 @@ class Parser {
                  std::string(spec->name) + " " + std::string(toks[t - 1].text) + " takes " + std::to_string(want) +
                      " value" + (want == 1 ? "" : "s") + ", got " + std::to_string(have));
           if (want == 0 && have > 4) fail(lineNo_, toks[t + 4].column, std::string(spec->name) + " takes at most 4 values");
-          for (; t < toks.size(); ++t) parseArg('f', toks[t], lineNo_, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
+          for (; t < toks.size(); ++t) parseNumberArg(toks[t], spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
+        } else if (kind == 'f') {
+          parseNumberArg(toks[t], spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
+          ++t;
         } else {
           parseArg(kind, toks[t], lineNo_, spec->name, static_cast<int>(t - 1), cmd.args[t - 1]);
           ++t;
@@ -720,6 +688,7 @@ class Parser {
   ScriptCommand callCommand_;          // the current call line's (kind Call, no label or probe)
   std::array<const CallSpec*, 4> recentCalls_{};  // the last calls' entries
   std::size_t nextRecent_ = 0;
+  const char* pieceEnd_ = nullptr;  // the end of the piece parseLines reads (shortDecimalAt's limit)
   Mode mode_ = Mode::Store;
   Sink sink_;
   int streamWidth_ = 0, streamHeight_ = 0;
