@@ -15,8 +15,10 @@
 #include "cli/render_command.hpp"
 #include "cli/step_command.hpp"
 #include "cli/test_command.hpp"
+#include "util/heap_reuse.hpp"
 
 int main(int argc, char** argv) {
+  mpr::keepFreedHeapMemory();  // freed blocks reused, not faulted in again (util/heap_reuse.hpp)
   CLI::App app{
       "mpr: a bit-exact emulator of an Iris-era graphics pipeline (8 stencil bits, 48-bit\n"
       "accumulation, 24-bit depth) and the multi-pass rendering of Diefenbach & Badler."};
