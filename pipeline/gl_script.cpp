@@ -212,7 +212,7 @@ class Parser {
         return;
       }
       default: {  // f, m, v
-        if (shortDecimalAt(tok.text, pieceEnd_, a.number)) return;
+        // A short plain decimal was read by parseNumberArg before this.
         const auto v = parseNumber(tok.text);
         if (!v) fail(line, tok.column, where() + " is a number: expected a C literal, got '" + std::string(text) + "'");
         a.number = *v;
@@ -376,7 +376,7 @@ class Parser {
             fail(lineNo_, head.column, "@window_map takes 9 numbers (a 3x3 matrix, column by column) or off");
           cmd.args.resize(9);
           for (std::size_t t = 1; t < toks.size(); ++t)
-            parseArg('f', toks[t], lineNo_, "@window_map", static_cast<int>(t - 1), cmd.args[t - 1]);
+            parseNumberArg(toks[t], "@window_map", static_cast<int>(t - 1), cmd.args[t - 1]);
           emit(script_, std::move(cmd));
           continue;
         }
