@@ -26,6 +26,7 @@
 #include "pipeline/primitive_assembly.hpp"
 #include "pipeline/span_shading.hpp"
 #include "util/vecmath.hpp"
+#include "util/recent_results.hpp"
 #include "util/row_queue.hpp"
 #include "util/vector_pool.hpp"
 
@@ -262,6 +263,8 @@ class GLContext : private detail::RowThreads {
     Vec3 normal;
     std::uint32_t material;  // index into blockMaterials_: the materials in force at this vertex
   };
+  static_assert(sizeof(Vertex) == 12 * sizeof(float), "no padding: RecentResults compares its bytes");
+  RecentResults<Vertex, ClipVertex, 256> recentVertices_;  // end()'s processed vertices of the piece
 
   // The GL_QUADS draw Mesa's vbo is building: consecutive glBegin(GL_QUADS)
   // blocks with nothing but vertex attributes between them become one draw,

@@ -317,8 +317,15 @@ void GLContext::end() {
     vertexLighting.mesaShininess0Attenuated = shininessZero && (departures_ & kShininess0Attenuated);
     std::vector<ClipVertex> processed;
     processed.reserve(count);
+    // Within a piece processVertex depends on the vertex alone (the
+    // matrices, lights and program are the piece's): a vertex the block
+    // repeats (a mesh's triangles share theirs; three in four of the
+    // bathroom trace's vertices repeat one of their block) takes the
+    // result of its first processing, byte for byte.
+    recentVertices_.clear();
     for (std::size_t i = 0; i < count; ++i)
-      processed.push_back(processVertex(vertices_[indices ? indices[i] : i], vertexLighting));
+      processed.push_back(recentVertices_.get(vertices_[indices ? indices[i] : i],
+                                              [&](const Vertex& v) { return processVertex(v, vertexLighting); }));
     return processed;
   };
   const bool quads = primitive_ == PrimitiveType::Quads || primitive_ == PrimitiveType::QuadStrip;
