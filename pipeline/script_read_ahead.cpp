@@ -54,6 +54,11 @@ void swapCommands(ScriptCommand& a, ScriptCommand& b) {
 // A command with a label or a probe (directives) goes whole, in `whole`.
 // Lines of a batch fetched ahead of the command being unpacked.
 constexpr std::size_t kPrefetchWords = 64;
+// The reader refills the batch the caller handed back longest ago, and only
+// once more than this many wait: its lines have left the calling core's
+// cache by then, so writing them does not wait for that core to give them
+// up (bathroom trace, 15 interleaved runs: 0.66 -> 0.62 s).
+constexpr std::size_t kSpareAge = 6;
 
 struct PackedHeader {
   std::int32_t line;
@@ -102,7 +107,7 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
   std::condition_variable readerMayGo, batchReady;
   bool readerWaiting = false, callerWaiting = false;
   std::deque<Batch> full;   // parsed, in order
-  std::vector<Batch> spare;  // handed back by the caller's thread
+  std::deque<Batch> spare;  // handed back by the caller's thread, oldest first
   bool finished = false, stop = false;
   std::exception_ptr readError;
 
@@ -119,9 +124,9 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
       if (stop) throw ReaderStopped{};
       full.push_back(std::move(batch));
       batch = Batch{};
-      if (!spare.empty()) {
-        batch = std::move(spare.back());
-        spare.pop_back();
+      if (spare.size() > kSpareAge) {
+        batch = std::move(spare.front());
+        spare.pop_front();
       }
       if (callerWaiting) batchReady.notify_one();
     };
