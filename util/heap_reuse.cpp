@@ -4,6 +4,9 @@
 
 #if defined(__GLIBC__)
 #include <malloc.h>
+#include <sys/mman.h>
+
+#include <cstdint>
 #endif
 
 namespace mpr {
@@ -13,6 +16,22 @@ void keepFreedHeapMemory() {
   // Setting either fixes it (glibc's dynamic threshold stops moving).
   mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
   mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
+#if defined(MADV_HUGEPAGE)
+  // The heap grown once, its pages asked for as 2 MB pages (transparent
+  // huge pages, where the kernel offers them on request), and given back
+  // to the heap's top, where the trim threshold keeps it: what the calling
+  // thread allocates later (set-ups, framebuffers) is faulted in 2 MB at a
+  // time, not 4 kB (bathroom trace: 6.2 k page faults -> ~2 k). Nothing is
+  // touched here, so memory only grows with what is used.
+  constexpr std::size_t kHeapReserve = 24 * 1024 * 1024, kHugePage = 2 * 1024 * 1024;
+  if (void* block = std::malloc(kHeapReserve)) {
+    const auto start = reinterpret_cast<std::uintptr_t>(block);
+    const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
+    const std::uintptr_t end = (start + kHeapReserve) & ~(kHugePage - 1);
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    std::free(block);
+  }
+#endif
 #endif
 }
 
