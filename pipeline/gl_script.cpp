@@ -22,6 +22,7 @@
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/script_line.hpp"
+#include "pipeline/recent_decimals.hpp"
 #include "pipeline/short_decimal.hpp"
 #include "pipeline/script_text.hpp"
 #include "util/spelling.hpp"
@@ -224,7 +225,7 @@ class Parser {
   // A number argument ('f'): a short plain decimal (most of a trace's
   // numbers) read in line, anything else (a GL_ name, an error) by parseArg.
   void parseNumberArg(const Token& tok, std::string_view callName, int index, ScriptArg& a) const {
-    if (shortDecimalAt(tok.text, pieceEnd_, a.number)) {
+    if (recentDecimals_.read(tok.text, pieceEnd_, a.number)) {
       a.bits = 0;
       a.column = tok.column;
       return;
@@ -689,6 +690,7 @@ class Parser {
   std::array<const CallSpec*, 4> recentCalls_{};  // the last calls' entries
   std::size_t nextRecent_ = 0;
   const char* pieceEnd_ = nullptr;  // the end of the piece parseLines reads (shortDecimalAt's limit)
+  mutable RecentDecimals recentDecimals_;  // the numbers read last, by their bytes
   Mode mode_ = Mode::Store;
   Sink sink_;
   int streamWidth_ = 0, streamHeight_ = 0;
