@@ -5,8 +5,8 @@
 // differ from one another only in their length or in one byte.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cstdint>
-#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -17,11 +17,7 @@
 namespace mpr {
 namespace {
 
-std::uint64_t bitsOf(double v) {
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
+std::uint64_t bitsOf(double v) { return std::bit_cast<std::uint64_t>(v); }
 
 // `token` read at the start of a buffer followed by `after`: RecentDecimals
 // and shortDecimalAt agree on the answer and the double.
