@@ -57,7 +57,8 @@ struct ScriptCommand {
   std::vector<ScriptArg> args;
   std::string label;  // pass label or snapshot name
   std::shared_ptr<const ScriptProbe> probe;  // Probe only
-  // (A member added here is added to swapCommands in script_read_ahead.cpp too.)
+  // (A member added here is added to swapCommands, Batch::add and the
+  // unpacking in script_read_ahead.cpp too.)
 };
 
 struct Script {

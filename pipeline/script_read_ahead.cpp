@@ -28,6 +28,13 @@ constexpr std::size_t kBatchesInFlight = 16;  // parsed ahead at most: some thir
 // then it parses a run of batches, not one per wake-up (on two cores shared
 // with the row threads, each wake-up may wait for a time slice).
 constexpr std::size_t kReaderResumesAt = kBatchesInFlight / 2;
+// Lines of a batch fetched ahead of the command being unpacked.
+constexpr std::size_t kPrefetchWords = 64;
+// The reader refills the batch the caller handed back longest ago, and only
+// once more than this many wait: its lines have left the calling core's
+// cache by then, so writing them does not wait for that core to give them
+// up (bathroom trace, 15 interleaved runs: 0.66 -> 0.62 s).
+constexpr std::size_t kSpareAge = 6;
 
 // std::swap by member: the vectors, string and pointer trade their buffers
 // (std::swap's three moves copied a short label's bytes each time).
@@ -52,13 +59,6 @@ void swapCommands(ScriptCommand& a, ScriptCommand& b) {
 // every line of a command cross twice, and the reader ran twice as long on
 // two cores as on one (0.47 against 0.22 s of CPU on the bathroom trace).
 // A command with a label or a probe (directives) goes whole, in `whole`.
-// Lines of a batch fetched ahead of the command being unpacked.
-constexpr std::size_t kPrefetchWords = 64;
-// The reader refills the batch the caller handed back longest ago, and only
-// once more than this many wait: its lines have left the calling core's
-// cache by then, so writing them does not wait for that core to give them
-// up (bathroom trace, 15 interleaved runs: 0.66 -> 0.62 s).
-constexpr std::size_t kSpareAge = 6;
 
 struct PackedHeader {
   std::int32_t line;
