@@ -84,7 +84,8 @@ struct Batch {
     const PackedHeader h{c.line, c.call, c.kind,
                          packed ? static_cast<std::uint16_t>(c.args.size()) : kWhole};
     std::memcpy(&words[used], &h, sizeof h);
-    if (packed) std::memcpy(&words[used + 1], c.args.data(), c.args.size() * sizeof(ScriptArg));
+    // (No copy of no arguments: an empty vector's data() may be null.)
+    if (packed && !c.args.empty()) std::memcpy(&words[used + 1], c.args.data(), c.args.size() * sizeof(ScriptArg));
     used += need;
     ++commands;
     if (packed) return;
@@ -188,7 +189,8 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
         local.label.clear();  // a sink may have left them moved from
         local.probe.reset();
         local.args.resize(h.argCount);
-        std::memcpy(static_cast<void*>(local.args.data()), &batch.words[at], h.argCount * sizeof(ScriptArg));
+        if (h.argCount > 0)
+          std::memcpy(static_cast<void*>(local.args.data()), &batch.words[at], h.argCount * sizeof(ScriptArg));
         at += 2 * std::size_t{h.argCount};
         sink(std::move(local));
       }
