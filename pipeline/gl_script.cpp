@@ -23,6 +23,7 @@
 #include "pipeline/gl_enums.hpp"
 #include "pipeline/script_line.hpp"
 #include "pipeline/recent_decimals.hpp"
+#include "pipeline/recent_lines.hpp"
 #include "pipeline/short_decimal.hpp"
 #include "pipeline/script_text.hpp"
 #include "util/spelling.hpp"
@@ -261,6 +262,25 @@ class Parser {
     size_t pos = 0;
     // A piece before the last ends in '\n': no line starts at its end.
     while (lastPiece ? pos <= text.size() : pos < text.size()) {
+      // A call line parsed before: its command again, unparsed (a call's
+      // parse depends on its bytes alone once the header is read).
+      if (mode_ != Mode::Header && !picture_) {
+        if (const RecentLines::Entry* kept = recentLines_.find(text, pos)) {
+          pos += kept->size + 1;
+          ++lineNo_;
+          ScriptCommand& cmd = callCommand_;
+          cmd.kind = ScriptCommand::Kind::Call;
+          cmd.label.clear();
+          cmd.probe.reset();
+          cmd.line = lineNo_;
+          cmd.call = kept->call;
+          cmd.args.assign(kept->args, kept->args + kept->argCount);
+          if (cmd.call == GLCall::Begin) inBegin_ = true;
+          if (cmd.call == GLCall::End) inBegin_ = false;
+          emit(script_, std::move(cmd));
+          continue;
+        }
+      }
       const ScriptLine cut = nextScriptLine(text, pos, tokens_);
       const std::string_view line = cut.text;
       pos = cut.next;
@@ -463,6 +483,7 @@ class Parser {
         }
       }
       checkSubset(*spec, cmd, toks, lineNo_);
+      recentLines_.keep(cmd.call, cmd.args);
       if (cmd.call == GLCall::Begin) inBegin_ = true;
       if (cmd.call == GLCall::End) inBegin_ = false;
       emit(script_, std::move(cmd));
@@ -691,6 +712,7 @@ class Parser {
   std::size_t nextRecent_ = 0;
   const char* pieceEnd_ = nullptr;  // the end of the piece parseLines reads (shortDecimalAt's limit)
   mutable RecentDecimals recentDecimals_;  // the numbers read last, by their bytes
+  RecentLines recentLines_;                // the call lines parsed last, by their bytes
   Mode mode_ = Mode::Store;
   Sink sink_;
   int streamWidth_ = 0, streamHeight_ = 0;
