@@ -367,8 +367,11 @@ class GLContext : private detail::RowThreads {
     bool fan;
   };
   // The rows y with y mod stride == phase of a set-up triangle.
-  void drawRows(const ClippedTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase);
-  void drawRows(const FanTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase);
+  // (fragments: the share's span to fill, scratch kept between triangles.)
+  void drawRows(const ClippedTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase,
+                FragmentSpan& fragments);
+  void drawRows(const FanTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase,
+                FragmentSpan& fragments);
   void defer(const FanTriangleRows& job);
   void drawDeferred();  // the deferred triangles, in order, queued for the row threads
   // The per-fragment operations, counted, observed.

@@ -120,56 +120,62 @@ std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlan
 }
 
 void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
-  const std::array<DrawVertex, 3> tri = {DrawVertex{a.clip, true, a.attr}, {b.clip, true, b.attr}, {c.clip, true, c.attr}};
   // draw_pipe_clip.c clip_tri: inside every plane passes as it is; outside
   // one plane with all three vertices is dropped; else clipped and fanned.
   const std::uint32_t ma = drawClipMask(a.clip, *userPlanes), mb = drawClipMask(b.clip, *userPlanes),
                       mc = drawClipMask(c.clip, *userPlanes);
   clipped = (ma | mb | mc) != 0;
-  if (!clipped) return setUp(tri[0], tri[1], tri[2]);
+  if (!clipped)  // set up from the vertices themselves (no copies of them)
+    return setUp({&a.clip, &b.clip, &c.clip}, {&a.attr, &b.attr, &c.attr},
+                 {llvmpipeWindow(a.clip, window), llvmpipeWindow(b.clip, window), llvmpipeWindow(c.clip, window)});
   if ((ma & mb & mc) != 0) return;
+  const std::array<DrawVertex, 3> tri = {DrawVertex{a.clip, true, a.attr}, {b.clip, true, b.attr}, {c.clip, true, c.attr}};
   const std::vector<DrawVertex> poly = clipLikeDraw(tri, ma | mb | mc, *userPlanes);
-  for (std::size_t i = 2; i < poly.size(); ++i) setUp(poly[i - 1], poly[i], poly[0]);
+  for (std::size_t i = 2; i < poly.size(); ++i) {
+    const DrawVertex &d0 = poly[i - 1], &d1 = poly[i], &d2 = poly[0];
+    setUp({&d0.clip, &d1.clip, &d2.clip}, {&d0.attr, &d1.attr, &d2.attr},
+          {toLlWindow(d0, window), toLlWindow(d1, window), toLlWindow(d2, window)});
+  }
 }
 
-void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const DrawVertex& d2) {
-  LlWindow p0 = toLlWindow(d0, window), p1 = toLlWindow(d1, window);
-  const LlWindow p2 = toLlWindow(d2, window);
+void LlvmpipeDepth::setUp(std::array<const Vec4*, 3> clip, std::array<const Varyings*, 3> attr,
+                          std::array<LlWindow, 3> p) {
   // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions.
   auto fixed = [](float f) { return saturateToInt64(std::nearbyint(static_cast<double>(f) * 256.0)); };
   // (Wrapping: a NaN or huge vertex's clamped position must not overflow.)
   const std::int64_t area =
-      wrappingSub(wrappingMul(wrappingSub(fixed(p0.x), fixed(p1.x)), wrappingSub(fixed(p2.y), fixed(p0.y))),
-                  wrappingMul(wrappingSub(fixed(p2.x), fixed(p0.x)), wrappingSub(fixed(p0.y), fixed(p1.y))));
+      wrappingSub(wrappingMul(wrappingSub(fixed(p[0].x), fixed(p[1].x)), wrappingSub(fixed(p[2].y), fixed(p[0].y))),
+                  wrappingMul(wrappingSub(fixed(p[2].x), fixed(p[0].x)), wrappingSub(fixed(p[0].y), fixed(p[1].y))));
   if (area == 0) return;  // llvmpipe draws nothing
   // y-down positions: a positive area here is counter-clockwise in GL's y-up window.
   const bool ccwUp = area > 0;
-  const DrawVertex* source[3] = {&d0, &d1, &d2};
   if (area < 0) {
-    std::swap(p0, p1);
-    std::swap(source[0], source[1]);
+    std::swap(p[0], p[1]);
+    std::swap(clip[0], clip[1]);
+    std::swap(attr[0], attr[1]);
   }
   // init_args: ooa = 1 / (dx01 dy20 - dy01 dx20), the deltas times it.
-  const float dx01 = p0.x - p1.x, dy01 = p0.y - p1.y;
-  const float dx20 = p2.x - p0.x, dy20 = p2.y - p0.y;
+  const float dx01 = p[0].x - p[1].x, dy01 = p[0].y - p[1].y;
+  const float dx20 = p[2].x - p[0].x, dy20 = p[2].y - p[0].y;
   const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
-  Triangle t;
+  // Set up where it is kept (a copy of its 300 bytes was a fifth of this).
+  Triangle& t = triangles.emplace_back();
   t.dx20ooa = dx20 * ooa;
   t.dy20ooa = dy20 * ooa;
   t.dx01ooa = dx01 * ooa;
   t.dy01ooa = dy01 * ooa;
-  t.x0Center = p0.x - 0.5f;
-  t.y0Center = p0.y - 0.5f;
+  t.x0Center = p[0].x - 0.5f;
+  t.y0Center = p[0].y - 0.5f;
   t.ccwUp = ccwUp;
-  const PlaneCoefficients z = t.plane(p0.z, p1.z, p2.z);
+  const PlaneCoefficients z = t.plane(p[0].z, p[1].z, p[2].z);
   t.a0 = z.a0;
   t.dzdx = z.dadx;
   t.dzdy = z.dady;
-  t.v = {p0, p1, p2};
+  t.v = p;
   for (int i = 0; i < 3; ++i) {
     // generate_viewport (and the clipper's interp) keep 1 / w in the position's w.
-    t.oow[i] = 1.0f / source[i]->clip.w;
-    t.attr[i] = source[i]->attr;
+    t.oow[i] = 1.0f / clip[i]->w;
+    t.attr[i] = *attr[i];
   }
   for (int i = 0; i < 3; ++i) {
     const LlWindow& a = t.v[i];
@@ -189,7 +195,6 @@ void LlvmpipeDepth::setUp(const DrawVertex& d0, const DrawVertex& d1, const Draw
     t.c[i] = wrappingSub(wrappingMul(dcdx, t.fixedX[i]), wrappingMul(dcdy, t.fixedY[i]));
     if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) t.c[i] = wrappingAdd(t.c[i], 1);
   }
-  triangles.push_back(t);
 }
 
 PlaneCoefficients LlvmpipeDepth::Triangle::plane(float v0, float v1, float v2) const {

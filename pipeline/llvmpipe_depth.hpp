@@ -116,7 +116,10 @@ struct LlvmpipeDepth {
   }
 
  private:
-  void setUp(const DrawVertex& d0, const DrawVertex& d1, const DrawVertex& d2);
+  // Sets up the triangle of the three vertices (clip position, varyings,
+  // window position), in the order llvmpipe receives them.
+  using Varyings = std::array<float, kVaryings>;
+  void setUp(std::array<const Vec4*, 3> clip, std::array<const Varyings*, 3> attr, std::array<LlWindow, 3> p);
 
   // The triangle llvmpipe's fixed-point edges cover the pixel with (the fill
   // rule gives it to one of the fan); where a pixel MPR covers falls just
