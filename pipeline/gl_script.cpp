@@ -268,16 +268,9 @@ class Parser {
         if (const RecentLines::Entry* kept = recentLines_.find(text, pos)) {
           pos += kept->size + 1;
           ++lineNo_;
-          ScriptCommand& cmd = callCommand_;
-          cmd.kind = ScriptCommand::Kind::Call;
-          cmd.label.clear();
-          cmd.probe.reset();
-          cmd.line = lineNo_;
-          cmd.call = kept->call;
+          ScriptCommand& cmd = startCall(kept->call);
           cmd.args.assign(kept->args, kept->args + kept->argCount);
-          if (cmd.call == GLCall::Begin) inBegin_ = true;
-          if (cmd.call == GLCall::End) inBegin_ = false;
-          emit(script_, std::move(cmd));
+          emitCall(cmd);
           continue;
         }
       }
@@ -435,14 +428,8 @@ class Parser {
                                       (near.empty() ? "" : "; did you mean '" + near + "'?"));
       }
       sawCall_ = true;
-      // One command object for every call line: its argument vector keeps
-      // its capacity unless a sink moved it away (a parser that stores).
-      ScriptCommand& cmd = callCommand_;
-      cmd.kind = ScriptCommand::Kind::Call;
-      cmd.label.clear();
-      cmd.probe.reset();
-      cmd.line = lineNo_;
-      cmd.call = spec->call;
+      // One command object for every call line (startCall).
+      ScriptCommand& cmd = startCall(spec->call);
       const std::string_view kinds = spec->args;
       const size_t given = toks.size() - 1;
       const bool variadic = !kinds.empty() && kinds.back() == 'v';
@@ -484,9 +471,7 @@ class Parser {
       }
       checkSubset(*spec, cmd, toks, lineNo_);
       recentLines_.keep(cmd.call, cmd.args);
-      if (cmd.call == GLCall::Begin) inBegin_ = true;
-      if (cmd.call == GLCall::End) inBegin_ = false;
-      emit(script_, std::move(cmd));
+      emitCall(cmd);
     }
     return false;
   }
@@ -685,6 +670,26 @@ class Parser {
   }
 
  private:
+  // The command of the current call line, reset for `call` (its argument
+  // vector keeps its capacity unless a sink moved it away).
+  ScriptCommand& startCall(GLCall call) {
+    ScriptCommand& cmd = callCommand_;
+    cmd.kind = ScriptCommand::Kind::Call;
+    cmd.label.clear();
+    cmd.probe.reset();
+    cmd.line = lineNo_;
+    cmd.call = call;
+    return cmd;
+  }
+
+  // A call line's command handed on; glBegin and glEnd open and close the
+  // block an @expect may not stand in.
+  void emitCall(ScriptCommand& cmd) {
+    if (cmd.call == GLCall::Begin) inBegin_ = true;
+    if (cmd.call == GLCall::End) inBegin_ = false;
+    emit(script_, std::move(cmd));
+  }
+
   void emit(Script& script, ScriptCommand&& cmd) const {
     if (mode_ == Mode::Store) script.commands.push_back(std::move(cmd));
     else if (mode_ == Mode::Stream && !outsideProbe_) sink_(std::move(cmd));
