@@ -29,7 +29,7 @@ ClipVertex interpolate(const ClipVertex& in, const ClipVertex& out, float t) {
 
 }  // namespace
 
-bool insideAllPlanes(const std::array<ClipVertex, 3>& tri, const std::vector<ClipPlane>& planes) {
+bool insideAllPlanes(const std::array<ClipVertex, 3>& tri, std::span<const ClipPlane> planes) {
   for (const ClipPlane& plane : planes)
     for (const ClipVertex& v : tri)
       if (!(distance(plane, v.clip) >= 0.0f)) return false;

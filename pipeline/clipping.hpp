@@ -6,6 +6,7 @@
 // is then snapped, and that decides ties on the edges it creates (measured:
 // a guard band changes coverage of centres lying exactly on such edges).
 #include <array>
+#include <span>
 #include <vector>
 
 #include "util/vecmath.hpp"
@@ -35,6 +36,6 @@ const std::vector<ClipPlane>& viewVolumePlanes();
 
 // Whether every vertex lies inside every plane (distance >= 0, as
 // clipPolygon measures it): then clipPolygon returns the triangle unchanged.
-bool insideAllPlanes(const std::array<ClipVertex, 3>& tri, const std::vector<ClipPlane>& planes);
+bool insideAllPlanes(const std::array<ClipVertex, 3>& tri, std::span<const ClipPlane> planes);
 
 }  // namespace mpr

@@ -10,11 +10,13 @@
 #include "pipeline/gl_context.hpp"
 #include "pipeline/llvmpipe_depth.hpp"
 #include "pipeline/llvmpipe_math.hpp"
+#include "pipeline/llvmpipe_row_spans.hpp"
 #include "pipeline/mesa_matrix_inverse.hpp"
 #include "pipeline/span_shading.hpp"
 #include "util/transforms.hpp"
 #include "raster/fixed_point.hpp"
 #include "raster/triangle_rasterizer.hpp"
+#include "util/cpu_dispatch.hpp"
 
 namespace mpr {
 namespace {
@@ -174,7 +176,7 @@ void GLContext::rectf(float x1, float y1, float x2, float y2) {
   end();
 }
 
-ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
+MPR_CPU_CLONES ClipVertex GLContext::processVertex(const Vertex& v, LightingState& s) const {
   ClipVertex out;
   // Position through the combined matrix, as Mesa's fixed-function program
   // computes it on llvmpipe (measured against llvmpipe's depths).
@@ -510,7 +512,13 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const Llvmpip
   // edges clipping makes (issue 17 class 4, large_coordinates_clip.gls).
   if (!windowMap_ && depth.clipped) return rasterizeLlvmpipeFan(depth);
   // Inside every plane, clipPolygon would return the triangle as it is.
-  if (insideAllPlanes(tri, clipPlanesClip_)) {
+  // Where draw's clip masks were all clear (depth.add, no window map), the
+  // six view-volume planes hold already: for finite vertices each of their
+  // distances is the very sum drawClipMask compares (x + w, w - x, ...), so
+  // only the user planes, which drawClipMask evaluates fused, are asked
+  // again.
+  const bool viewVolumeHolds = !windowMap_ && !depth.clipped;
+  if (insideAllPlanes(tri, std::span<const ClipPlane>(clipPlanesClip_).subspan(viewVolumeHolds ? 6 : 0))) {
     for (const ClipVertex& v : tri)
       if (!(v.clip.w > 0.0f)) return;
     ++counters_.trianglesDrawn;
@@ -582,7 +590,7 @@ int GLContext::facingColorOffset(bool ccw) const {
   return (front || !(lightingEnabled_ && lighting_.model.twoSide)) ? 0 : 4;
 }
 
-void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+MPR_CPU_CLONES void GLContext::rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                                          const LlvmpipeDepth& depth) {
   const ClipVertex* v[3] = {&a, &b, &c};
   std::array<SnappedVertex, 3> snapped;
@@ -739,11 +747,6 @@ void GLContext::drawRows(const ClippedTriangleRows& job, const DrawState& state,
       stride, phase);
 }
 
-namespace {
-// floor(a / b) for b > 0.
-std::int64_t floorDivide(std::int64_t a, std::int64_t b) { return a / b - (a % b != 0 && a < 0 ? 1 : 0); }
-}  // namespace
-
 void GLContext::rasterizeLlvmpipeFan(const LlvmpipeDepth& depth) {
   if (depth.triangles.empty()) return;  // llvmpipe draws nothing of it
   ++counters_.trianglesDrawn;
@@ -797,21 +800,12 @@ void GLContext::drawRows(const FanTriangleRows& job, const DrawState& state, Fra
   // The share's rows are GL rows y = fbHeight - 1 - yDown with y mod stride
   // == phase (the same rows a clipped triangle's share holds).
   const std::int64_t wanted = ((fbHeight - 1 - phase) % stride + stride) % stride;  // yDown mod stride
-  for (std::int64_t yDown = job.y0 + ((wanted - job.y0 % stride) % stride + stride) % stride; yDown <= job.y1;
-       yDown += stride) {
-    // The row's span, solved from covers()' half-planes c + dcdy py - dcdx px > 0
-    // (px = 256 x) in exact integers: the pixels a test of each would pass.
-    std::int64_t spanLo = job.x0, spanHi = job.x1;
-    for (int i = 0; i < 3 && spanLo <= spanHi; ++i) {
-      const int j = (i + 1) % 3;
-      const std::int64_t a = (t.fixedY[i] - t.fixedY[j]) * 256;
-      // Wrapping as covers() wraps: only a NaN or huge vertex's clamped position overflows.
-      const std::int64_t k = wrappingAdd(t.c[i], (t.fixedX[i] - t.fixedX[j]) * (yDown * 256));
-      const std::int64_t km1 = wrappingSub(k, 1);
-      if (a > 0) spanHi = std::min(spanHi, floorDivide(km1, a));           // a x <= k - 1
-      else if (a < 0) spanLo = std::max(spanLo, -floorDivide(km1, -a));    // -a x >= 1 - k
-      else if (!(k > 0)) spanHi = spanLo - 1;
-    }
+  const std::int64_t first = job.y0 + ((wanted - job.y0 % stride) % stride + stride) % stride;
+  // Each row's span: the pixels a test of covers()' half-planes would pass.
+  LlvmpipeRowSpans rows(t, first, stride, job.x0, job.x1);
+  for (std::int64_t yDown = first; yDown <= job.y1; yDown += stride) {
+    std::int64_t spanLo, spanHi;
+    rows.next(spanLo, spanHi);
     const int y = fbHeight - 1 - static_cast<int>(yDown);
     for (std::int64_t from = spanLo; from <= spanHi; from += FragmentSpan::kCapacity) {
       fragments.x = static_cast<int>(from);

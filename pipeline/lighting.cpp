@@ -5,6 +5,7 @@
 
 #include "pipeline/llvmpipe_math.hpp"
 #include "pipeline/mesa_matrix_inverse.hpp"
+#include "util/cpu_dispatch.hpp"
 
 namespace mpr {
 namespace {
@@ -71,7 +72,7 @@ void toObjectSpace(LightingState& s, const Mat4& modelview, const Mat4& inverse)
 //    ambient product (with attenuation) or col = ambient product + col
 //    (without), col = lit.y * diffuse product + col, col = lit.z *
 //    specular product + col, each MAD unfused.
-Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, bool back) {
+MPR_CPU_CLONES Vec4 lightVertex(const LightingState& s, const Vec4& eye, const Vec3& normalIn, bool back) {
   const Material& m = s.material[back ? 1 : 0];
   const Vec3 n = back ? -normalIn : normalIn;
   const Vec3 v = eye.w != 0.0f ? Vec3(eye) / eye.w : Vec3(eye);

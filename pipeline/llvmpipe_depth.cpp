@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "raster/fixed_point.hpp"
+#include "util/cpu_dispatch.hpp"
 
 namespace mpr {
 namespace {
@@ -95,13 +96,6 @@ std::int64_t snapLikeLlvmpipe(float v) {
 
 }  // namespace
 
-LlWindow llvmpipeWindow(const Vec4& clip, const WindowTransform& t) {
-  const float oow = 1.0f / clip.w;
-  const float flippedTransY = static_cast<float>(t.fbHeight) - t.transY;
-  return {std::fma(clip.x * oow, t.scaleX, t.transX), std::fma(clip.y * oow, -t.scaleY, flippedTransY),
-          std::fma(clip.z * oow, t.scaleZ, t.transZ)};
-}
-
 // The vertex's clip mask as draw_llvm.c generate_clipmask computes it.
 std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes) {
   std::uint32_t m = 0;
@@ -119,7 +113,7 @@ std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlan
   return m;
 }
 
-void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
+MPR_CPU_CLONES void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
   // draw_pipe_clip.c clip_tri: inside every plane passes as it is; outside
   // one plane with all three vertices is dropped; else clipped and fanned.
   const std::uint32_t ma = drawClipMask(a.clip, *userPlanes), mb = drawClipMask(b.clip, *userPlanes),
@@ -138,7 +132,7 @@ void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b, const ClipVert
   }
 }
 
-void LlvmpipeDepth::setUp(std::array<const Vec4*, 3> clip, std::array<const Varyings*, 3> attr,
+MPR_CPU_CLONES void LlvmpipeDepth::setUp(std::array<const Vec4*, 3> clip, std::array<const Varyings*, 3> attr,
                           std::array<LlWindow, 3> p) {
   // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions.
   auto fixed = [](float f) { return saturateToInt64(std::nearbyint(static_cast<double>(f) * 256.0)); };

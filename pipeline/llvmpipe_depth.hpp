@@ -47,8 +47,14 @@ struct LlWindow {  // window position in llvmpipe's y-down space
 
 // Where llvmpipe puts a vertex that came out of the vertex shader (draw_llvm.c
 // generate_viewport): (clip * 1/w) * scale + translate, one fused
-// multiply-add, on OSMesa's flipped rows.
-LlWindow llvmpipeWindow(const Vec4& clip, const WindowTransform& t);
+// multiply-add, on OSMesa's flipped rows. Inline: in the set-up's x86-64-v3
+// clones (MPR_CPU_CLONES) each std::fma is one instruction.
+inline LlWindow llvmpipeWindow(const Vec4& clip, const WindowTransform& t) {
+  const float oow = 1.0f / clip.w;
+  const float flippedTransY = static_cast<float>(t.fbHeight) - t.transY;
+  return {std::fma(clip.x * oow, t.scaleX, t.transX), std::fma(clip.y * oow, -t.scaleY, flippedTransY),
+          std::fma(clip.z * oow, t.scaleZ, t.transZ)};
+}
 
 // The vertex's clip mask as draw_llvm.c generate_clipmask computes it: bit
 // i set where the vertex lies outside draw's plane i (see llvmpipe_depth.cpp).

@@ -187,7 +187,7 @@ enum class BlockDepth { Zero, Plane, Stored };
 
 }  // namespace
 
-void setUpChannelPlanes(const LlvmpipeDepth::Triangle& t, int colorOffset, bool flat, bool fog, ChannelPlanes& out) {
+MPR_CPU_CLONES void setUpChannelPlanes(const LlvmpipeDepth::Triangle& t, int colorOffset, bool flat, bool fog, ChannelPlanes& out) {
   out.oow = t.plane(t.oow[0], t.oow[1], t.oow[2]);
   const bool oowUniform = out.oow.dadx == 0.0f && out.oow.dady == 0.0f;
   const int channels = fog ? 5 : 4;

@@ -50,4 +50,7 @@ inline std::int64_t snapToSubpixel(float windowCoord) {
 inline std::int64_t ceilDivSubpixel(std::int64_t v) { return -((-v) >> kSubpixelBits); }
 inline std::int64_t floorDivSubpixel(std::int64_t v) { return v >> kSubpixelBits; }
 
+// floor(a / b) for b > 0.
+inline std::int64_t floorDivide(std::int64_t a, std::int64_t b) { return a / b - (a % b != 0 && a < 0 ? 1 : 0); }
+
 }  // namespace mpr
