@@ -61,16 +61,19 @@ FragmentFate specialised(const FragmentState& s, Framebuffer& fb, const Fragment
 // decided for the whole span, then stencil, depth and colour are written
 // where the fragment-by-fragment run would write them. The pixels of a span
 // are distinct, so no fragment sees another's writes either way.
-template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
-MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
-  constexpr int N = FragmentSpan::kCapacity;
+// kLanes: 0 for any span, or a span of at most kLanes fragments run over
+// exactly kLanes lanes (loops of a constant count: most spans of a trace
+// are a few pixels, and a loop's set-up cost more than its body).
+template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor, int kLanes>
+[[gnu::always_inline]] inline std::uint32_t spanBody(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
+  constexpr int N = kLanes > 0 ? kLanes : FragmentSpan::kCapacity;
   const int n = span.count;
   // The tests and operations run over whole vectors of lanes (paddedLanes):
   // the span's lanes past n are defined (FragmentSpan), the buffers' cells
   // are read into arrays whose lanes past n are zeroed (not all of it: a
   // memset of the whole array is a `rep stos`, slower than the loops it
   // saves), and only the n pixels are counted and written.
-  const int lanes = paddedLanes(n);
+  const int lanes = kLanes > 0 ? kLanes : paddedLanes(n);
   std::uint8_t* const st = &fb.stencil(span.x, span.y);
   std::uint32_t* const z = &fb.depth(span.x, span.y);
   Rgba8* const dst = &fb.color(span.x, span.y);
@@ -146,6 +149,12 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
     for (int k = 0; k < n; ++k) std::memcpy(&dst[k], &dst32[k], sizeof(Rgba8));
   }
   return count;
+}
+
+template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
+MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span) {
+  if (span.count <= 8) return spanBody<kAlpha, kStencil, kDepth, kBlend, kColor, 8>(s, fb, span);
+  return spanBody<kAlpha, kStencil, kDepth, kBlend, kColor, 0>(s, fb, span);
 }
 
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
