@@ -37,9 +37,12 @@ Vec4 drawPlane(std::size_t i, const std::vector<ClipPlane>& userPlanes) {
 // fan emit_poly makes. (MPR's own clipper, which decides coverage, orders
 // planes and intersections differently; the polygon is the same up to
 // rounding.)
-std::vector<DrawVertex> clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::uint32_t mask,
-                                     const std::vector<ClipPlane>& userPlanes) {
-  std::vector<DrawVertex> in(tri.begin(), tri.end()), out;
+// `in` and `out` are the caller's storage, kept between triangles (no
+// allocation per clipped triangle); the polygon is left in `in` (empty when
+// a vertex is not finite).
+void clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::uint32_t mask, const std::vector<ClipPlane>& userPlanes,
+                  std::vector<DrawVertex>& in, std::vector<DrawVertex>& out) {
+  in.assign(tri.begin(), tri.end());
   auto dot4 = [](const Vec4& a, const Vec4& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; };
   // interp(): position and every varying (all perspective-interpolated, the
   // colours' mode when not flat) out + t (in - out).
@@ -57,12 +60,12 @@ std::vector<DrawVertex> clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::
     out.clear();
     DrawVertex prev = in[0];
     float dpPrev = dot4(prev.clip, plane);
-    if (!std::isfinite(dpPrev)) return {};
+    if (!std::isfinite(dpPrev)) return in.clear();
     in.push_back(in[0]);
     for (std::size_t i = 1; i < in.size(); ++i) {
       const DrawVertex& v = in[i];
       const float dp = dot4(v.clip, plane);
-      if (!std::isfinite(dp)) return {};
+      if (!std::isfinite(dp)) return in.clear();
       bool differentSign;
       if (dpPrev >= 0.0f) {
         out.push_back(prev);
@@ -82,7 +85,6 @@ std::vector<DrawVertex> clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::
     }
     in.swap(out);
   }
-  return in;
 }
 
 // lp_setup_tri.c calc_fixed_position: (v - pixel_offset) * FIXED_ONE in
@@ -96,23 +98,6 @@ std::int64_t snapLikeLlvmpipe(float v) {
 
 }  // namespace
 
-// The vertex's clip mask as draw_llvm.c generate_clipmask computes it.
-std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes) {
-  std::uint32_t m = 0;
-  if (p.x > p.w) m |= 1u;
-  if (p.x + p.w < 0.0f) m |= 2u;
-  if (p.y > p.w) m |= 4u;
-  if (p.y + p.w < 0.0f) m |= 8u;
-  if (p.z + p.w < 0.0f) m |= 16u;
-  if (p.z > p.w) m |= 32u;
-  for (std::size_t i = 0; i < userPlanes.size(); ++i) {
-    const Vec4& u = userPlanes[i];
-    const float d = std::fma(u.w, p.w, std::fma(u.z, p.z, std::fma(u.y, p.y, u.x * p.x)));
-    if (0.0f > d || !std::isfinite(d)) m |= 1u << (6 + i);
-  }
-  return m;
-}
-
 MPR_CPU_CLONES void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c) {
   // draw_pipe_clip.c clip_tri: inside every plane passes as it is; outside
   // one plane with all three vertices is dropped; else clipped and fanned.
@@ -124,7 +109,8 @@ MPR_CPU_CLONES void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b,
                  {llvmpipeWindow(a.clip, window), llvmpipeWindow(b.clip, window), llvmpipeWindow(c.clip, window)});
   if ((ma & mb & mc) != 0) return;
   const std::array<DrawVertex, 3> tri = {DrawVertex{a.clip, true, a.attr}, {b.clip, true, b.attr}, {c.clip, true, c.attr}};
-  const std::vector<DrawVertex> poly = clipLikeDraw(tri, ma | mb | mc, *userPlanes);
+  clipLikeDraw(tri, ma | mb | mc, *userPlanes, clipScratchIn, clipScratchOut);
+  const std::vector<DrawVertex>& poly = clipScratchIn;
   for (std::size_t i = 2; i < poly.size(); ++i) {
     const DrawVertex &d0 = poly[i - 1], &d1 = poly[i], &d2 = poly[0];
     setUp({&d0.clip, &d1.clip, &d2.clip}, {&d0.attr, &d1.attr, &d2.attr},

@@ -57,8 +57,24 @@ inline LlWindow llvmpipeWindow(const Vec4& clip, const WindowTransform& t) {
 }
 
 // The vertex's clip mask as draw_llvm.c generate_clipmask computes it: bit
-// i set where the vertex lies outside draw's plane i (see llvmpipe_depth.cpp).
-std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes);
+// i set where the vertex lies outside draw's plane i (the order of
+// kDrawPlanes in llvmpipe_depth.cpp), user planes as bits 6 and up. Inline,
+// for the set-up's clones.
+inline std::uint32_t drawClipMask(const Vec4& p, const std::vector<ClipPlane>& userPlanes) {
+  std::uint32_t m = 0;
+  if (p.x > p.w) m |= 1u;
+  if (p.x + p.w < 0.0f) m |= 2u;
+  if (p.y > p.w) m |= 4u;
+  if (p.y + p.w < 0.0f) m |= 8u;
+  if (p.z + p.w < 0.0f) m |= 16u;
+  if (p.z > p.w) m |= 32u;
+  for (std::size_t i = 0; i < userPlanes.size(); ++i) {
+    const Vec4& u = userPlanes[i];
+    const float d = std::fma(u.w, p.w, std::fma(u.z, p.z, std::fma(u.y, p.y, u.x * p.x)));
+    if (0.0f > d || !std::isfinite(d)) m |= 1u << (6 + i);
+  }
+  return m;
+}
 
 // llvmpipe's depth for the fragments of one MPR triangle, bit for bit.
 //
@@ -108,6 +124,8 @@ struct LlvmpipeDepth {
   // Whether draw's clipper cut the last triangle added (then its fan, not
   // MPR's triangle, is what llvmpipe rasterises: GLContext draws that fan).
   bool clipped = false;
+  // The clipper's polygons, storage kept between the triangles of a draw.
+  std::vector<DrawVertex> clipScratchIn = {}, clipScratchOut = {};
 
   // Adds the triangles draw and llvmpipe make of (a, b, c), given in the
   // order llvmpipe receives it.
