@@ -28,7 +28,8 @@ void keepFreedHeapMemory() {
   // thread allocates later (set-ups, framebuffers) is faulted in 2 MB at a
   // time, not 4 kB (bathroom trace: 6.2 k page faults -> 1.1 k). Nothing is
   // touched here, so memory only grows with what is used.
-  constexpr std::size_t kHeapReserve = 24 * 1024 * 1024, kHugePage = 2 * 1024 * 1024;
+  // (Below the mmap threshold above, so that it comes from the heap.)
+  constexpr std::size_t kHeapReserve = 30 * 1024 * 1024, kHugePage = 2 * 1024 * 1024;
   if (void* block = std::malloc(kHeapReserve)) {
     const auto start = reinterpret_cast<std::uintptr_t>(block);
     const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
