@@ -355,7 +355,6 @@ class GLContext : private detail::RowThreads {
     std::array<SnappedVertex, 3> snapped;
     PixelBounds bounds;
     TriangleShading shading;
-    std::int64_t rowLo, rowHi, colLo, colHi;  // GL rows and columns its pixels lie in
   };
   struct FanTriangleRows {  // one triangle of llvmpipe's fan
     FanShading shading;

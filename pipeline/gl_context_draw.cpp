@@ -644,15 +644,16 @@ MPR_CPU_CLONES void GLContext::rasterizeClippedTriangle(const ClipVertex& a, con
   const PixelBounds bounds{region.x0, region.y0, region.x1, region.y1};
   // Where llvmpipe's clipping dropped what MPR's kept, MPR's own triangle
   // stands in (it is then at most a few pixels of an edge).
-  LlvmpipeDepth fallback{depth.window, depth.userPlanes, {}};
-  if (depth.triangles.empty() && !windowMap_) fallback.add(a, b, c);
-  const LlvmpipeDepth& depthPlanes = depth.triangles.empty() ? fallback : depth;
+  std::optional<LlvmpipeDepth> fallback;  // (its vectors made only when it is)
+  if (depth.triangles.empty()) {
+    fallback.emplace(LlvmpipeDepth{depth.window, depth.userPlanes, {}});
+    if (!windowMap_) fallback->add(a, b, c);
+  }
+  const LlvmpipeDepth& depthPlanes = fallback ? *fallback : depth;
 
   // The triangle's rows within the region: none, and nothing is set up.
   const std::int64_t top = std::max({snapped[0].y, snapped[1].y, snapped[2].y});
   const std::int64_t bottom = std::min({snapped[0].y, snapped[1].y, snapped[2].y});
-  const std::int64_t left = std::min({snapped[0].x, snapped[1].x, snapped[2].x});
-  const std::int64_t right = std::max({snapped[0].x, snapped[1].x, snapped[2].x});
   const std::int64_t rowLo = std::max<std::int64_t>(bounds.y0, ceilDivSubpixel(bottom));
   const std::int64_t rowHi = std::min<std::int64_t>(bounds.y1 - 1, floorDivSubpixel(top));
   if (rowLo > rowHi) return;
@@ -665,25 +666,12 @@ MPR_CPU_CLONES void GLContext::rasterizeClippedTriangle(const ClipVertex& a, con
   ClippedTriangleRows& job = deferred ? deferredClipped_.emplace_back() : drawnNow;
   job.snapped = snapped;
   job.bounds = bounds;
-  job.rowLo = rowLo;
-  job.rowHi = rowHi;
-  job.colLo = std::max<std::int64_t>(bounds.x0, ceilDivSubpixel(left));
-  job.colHi = std::min<std::int64_t>(bounds.x1 - 1, floorDivSubpixel(right));
 
   // Coverage is decided on the snapped vertices; colours are interpolated on
   // the unsnapped window positions, as llvmpipe sets up its planes (depth
   // follows llvmpipe's own arithmetic, see LlvmpipeDepth). All of it is set
   // up here once; shadeSpan does the per-pixel part a row span at a time.
   TriangleShading& t = job.shading;
-  t.ex1 = xWin[1] - xWin[0];
-  t.ey1 = yWin[1] - yWin[0];
-  t.ex2 = xWin[2] - xWin[0];
-  t.ey2 = yWin[2] - yWin[0];
-  t.xWin0 = xWin[0];
-  t.yWin0 = yWin[0];
-  t.exactArea = t.ex1 * t.ey2 - t.ex2 * t.ey1;
-  t.useSnapped = !(std::fabs(t.exactArea) > 0.0);  // degenerate before snapping
-  t.snappedArea = static_cast<double>(area > 0 ? area : -area);  // the weights' sum
   t.depthMax = static_cast<float>(fb_.profile().depthMax());
   t.fbHeight = fb_.height();
   if (frag_.depth.enabled) {
@@ -704,8 +692,6 @@ MPR_CPU_CLONES void GLContext::rasterizeClippedTriangle(const ClipVertex& a, con
     }
   }
   t.color = needsColor(frag_);
-  for (int i = 0; i < 3; ++i) t.invW[i] = invW[i];
-  vertexChannels(a, b, c, colorOffset, t.attr, t.constant);
   t.uniformColor = uniformColor();
   if (fog_.enabled) t.fog = &fog_;
   // llvmpipe draws the triangle as one: its colours are that triangle's
@@ -713,8 +699,23 @@ MPR_CPU_CLONES void GLContext::rasterizeClippedTriangle(const ClipVertex& a, con
   t.llvmpipeColor = t.color && !windowMap_ && depthPlanes.triangles.size() == 1;
   if (t.llvmpipeColor)
     setUpChannelPlanes(depthPlanes.triangles[0], colorOffset, t.uniformColor, t.fog != nullptr, t.channels);
-  else
+  // The exact weights and the vertices' channels: read by shadeSpan only
+  // for MPR's own colours or the window map's depth (most triangles, those
+  // of llvmpipe's colour planes or of no colour, skip them).
+  if ((t.color && !t.llvmpipeColor) || t.depth == TriangleShading::Depth::WindowMap) {
+    t.ex1 = xWin[1] - xWin[0];
+    t.ey1 = yWin[1] - yWin[0];
+    t.ex2 = xWin[2] - xWin[0];
+    t.ey2 = yWin[2] - yWin[0];
+    t.xWin0 = xWin[0];
+    t.yWin0 = yWin[0];
+    t.exactArea = t.ex1 * t.ey2 - t.ex2 * t.ey1;
+    t.useSnapped = !(std::fabs(t.exactArea) > 0.0);  // degenerate before snapping
+    t.snappedArea = static_cast<double>(area > 0 ? area : -area);  // the weights' sum
+    for (int i = 0; i < 3; ++i) t.invW[i] = invW[i];
+    vertexChannels(a, b, c, colorOffset, t.attr, t.constant);
     decideFlatColor(t);
+  }
 
   if (deferred) {
     deferred_.push_back({static_cast<std::uint32_t>(deferredClipped_.size() - 1), false});
