@@ -512,12 +512,12 @@ void GLContext::drawTriangle(const std::array<ClipVertex, 3>& tri, const Llvmpip
   // edges clipping makes (issue 17 class 4, large_coordinates_clip.gls).
   if (!windowMap_ && depth.clipped) return rasterizeLlvmpipeFan(depth);
   // Inside every plane, clipPolygon would return the triangle as it is.
-  // Where draw's clip masks were all clear (depth.add, no window map), the
-  // six view-volume planes hold already: for finite vertices each of their
-  // distances is the very sum drawClipMask compares (x + w, w - x, ...), so
-  // only the user planes, which drawClipMask evaluates fused, are asked
-  // again.
-  const bool viewVolumeHolds = !windowMap_ && !depth.clipped;
+  // Without a window map, depth.add found draw's clip masks all clear (a
+  // clipped triangle went to its fan above), so the six view-volume planes
+  // hold already: for finite vertices each of their distances is the very
+  // sum drawClipMask compares (x + w, w - x, ...), and only the user planes,
+  // which drawClipMask evaluates fused, are asked again.
+  const bool viewVolumeHolds = !windowMap_;
   if (insideAllPlanes(tri, std::span<const ClipPlane>(clipPlanesClip_).subspan(viewVolumeHolds ? 6 : 0))) {
     for (const ClipVertex& v : tri)
       if (!(v.clip.w > 0.0f)) return;

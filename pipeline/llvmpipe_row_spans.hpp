@@ -16,7 +16,6 @@
 #include <array>
 #include <cstdint>
 
-
 #include "pipeline/llvmpipe_depth.hpp"
 
 namespace mpr {

@@ -14,7 +14,8 @@ namespace mpr {
 void keepFreedHeapMemory() {
 #if defined(__GLIBC__)
   // Setting either fixes it (glibc's dynamic threshold stops moving).
-  mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
+  constexpr std::size_t kMmapThreshold = 32 * 1024 * 1024;
+  mallopt(M_MMAP_THRESHOLD, kMmapThreshold);
   mallopt(M_TRIM_THRESHOLD, 512 * 1024 * 1024);
   // One arena for every thread: the script reader's batches then come from
   // the heap grown below, in 2 MB pages, not from an arena of its own
@@ -28,8 +29,8 @@ void keepFreedHeapMemory() {
   // thread allocates later (set-ups, framebuffers) is faulted in 2 MB at a
   // time, not 4 kB (bathroom trace: 6.2 k page faults -> 1.1 k). Nothing is
   // touched here, so memory only grows with what is used.
-  // (Below the mmap threshold above, so that it comes from the heap.)
   constexpr std::size_t kHeapReserve = 30 * 1024 * 1024, kHugePage = 2 * 1024 * 1024;
+  static_assert(kHeapReserve < kMmapThreshold, "at the threshold the reserve would be a mapping, not the heap");
   if (void* block = std::malloc(kHeapReserve)) {
     const auto start = reinterpret_cast<std::uintptr_t>(block);
     const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
