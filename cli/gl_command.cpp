@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -134,7 +135,13 @@ int runGl(const GlOptions& o) {
     };
     // With more than one thread the script is parsed ahead on one of them
     // while the calls run (the same commands in the same order).
-    if (o.threads > 1) streamScriptAhead(*text, script, run);
+    // A call goes to the executor as its parts, no command made for it.
+    const auto runCall = [&](GLCall call, int line, std::span<const ScriptArg> args) {
+      if (!executor.executeCall(call, line, args)) return false;
+      ++calls;
+      return true;
+    };
+    if (o.threads > 1) streamScriptAhead(*text, script, run, runCall);
     else streamScript(*text, script, run);
     releaseReports();
     errors = executor.finish();

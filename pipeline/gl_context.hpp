@@ -253,6 +253,10 @@ class GLContext : private detail::RowThreads {
   // Default 1: everything on the calling thread.
   void setThreads(int threads);
   int threads() const { return rowQueue ? rowQueue->threads() : 1; }
+  // With row threads, a draw is queued in pieces of at most this many
+  // triangles: the threads start on the first while the rest are set up,
+  // and the set-ups in flight stay bounded however long the draw.
+  static constexpr std::size_t kTrianglesPerQueuedDraw = 256;
 
  private:
   bool clearByQuad(const ClearBuffers& which) const;

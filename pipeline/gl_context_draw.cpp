@@ -475,15 +475,24 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
   // together at the end, for the row threads to draw (drawDeferred).
   deferring_ = rowQueue != nullptr && !fragmentObserver;
   if (deferring_) {
-    // drawDeferred hands these vectors to the queued draw, so each draw
-    // starts them empty: sized once here (a triangle is one set-up unless
-    // MPR's clipper cuts it), not grown by doubling, which copied every
-    // set-up so far (half of the set-up's time on the bathroom trace).
-    deferred_.reserve(tris.size());
-    deferredClipped_.reserve(tris.size());
+    // drawDeferred hands these vectors to the queued piece, so each piece
+    // starts them empty: sized once for it here (a triangle is one set-up
+    // unless MPR's clipper cuts it), not grown by doubling, which copied
+    // every set-up so far (half of the set-up's time on the bathroom trace).
+    deferred_.reserve(std::min(tris.size(), kTrianglesPerQueuedDraw));
+    deferredClipped_.reserve(std::min(tris.size(), kTrianglesPerQueuedDraw));
   }
   LlvmpipeDepth depth{window, &userPlanes, {}};
-  for (const AssembledTriangle& t : tris) {
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    // A long draw is queued a piece at a time, so the row threads start on
+    // its first triangles while the rest are being set up (a draw of the
+    // bathroom trace has up to 4 000).
+    if (deferring_ && deferred_.size() >= kTrianglesPerQueuedDraw) {
+      drawDeferred();
+      deferred_.reserve(std::min(tris.size() - k, kTrianglesPerQueuedDraw));
+      deferredClipped_.reserve(std::min(tris.size() - k, kTrianglesPerQueuedDraw));
+    }
+    const AssembledTriangle& t = tris[k];
     std::array<ClipVertex, 3> tri = {processed[t.v[0]], processed[t.v[1]], processed[t.v[2]]};
     if (flatShading_)
       for (ClipVertex& cv : tri)

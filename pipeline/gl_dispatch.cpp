@@ -1,6 +1,7 @@
 #include "pipeline/gl_dispatch.hpp"
 
 #include <array>
+#include <span>
 #include <tuple>
 #include <type_traits>
 
@@ -13,15 +14,15 @@ namespace {
 // has checked every count; the cursor checks it again, as an invariant.
 class ArgCursor {
  public:
-  explicit ArgCursor(const ScriptCommand& c) : c_(c) {}
+  explicit ArgCursor(std::span<const ScriptArg> args) : args_(args) {}
   const ScriptArg& next() {
-    MPR_CHECK_LT(i_, c_.args.size());
-    return c_.args[i_++];
+    MPR_CHECK_LT(i_, args_.size());
+    return args_[i_++];
   }
-  std::size_t left() const { return c_.args.size() - i_; }
+  std::size_t left() const { return args_.size() - i_; }
 
  private:
-  const ScriptCommand& c_;
+  std::span<const ScriptArg> args_;
   std::size_t i_ = 0;
 };
 
@@ -51,11 +52,11 @@ struct Arg<const T*> {
 };
 
 template <class... P>
-void invoke(GLApi& api, void (GLApi::*fn)(P...), const ScriptCommand& cmd) {
-  ArgCursor cursor(cmd);
+void invoke(GLApi& api, void (GLApi::*fn)(P...), std::span<const ScriptArg> args) {
+  ArgCursor cursor(args);
   // Braced initialisation reads the arguments left to right.
-  const std::tuple<Arg<P>...> args{Arg<P>(cursor)...};
-  std::apply([&](const auto&... a) { (api.*fn)(a.get()...); }, args);
+  const std::tuple<Arg<P>...> values{Arg<P>(cursor)...};
+  std::apply([&](const auto&... a) { (api.*fn)(a.get()...); }, values);
 }
 
 }  // namespace
@@ -81,9 +82,13 @@ void dispatch(GLApi& api, const ScriptCommand& cmd) {
       return;
     case ScriptCommand::Kind::Call: break;
   }
-  switch (cmd.call) {
+  dispatchCall(api, cmd.call, cmd.args);
+}
+
+void dispatchCall(GLApi& api, GLCall call, std::span<const ScriptArg> callArgs) {
+  switch (call) {
 #define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) \
-  case GLCall::Enum: return invoke(api, &GLApi::method, cmd);
+  case GLCall::Enum: return invoke(api, &GLApi::method, callArgs);
 #include "pipeline/gl_calls.def"
   }
 }

@@ -61,6 +61,29 @@ void ScriptExecutor::execute(const ScriptCommand& cmd) {
   }
 }
 
+bool ScriptExecutor::executeCall(GLCall call, int line, std::span<const ScriptArg> args) {
+  if (hooks_.beforeCall) return false;
+  // A trace's vertices and normals (nine in ten of its calls) called on the
+  // emulator directly, not through dispatchCall's table and argument tuple;
+  // the parser has checked their counts.
+  const auto number = [&](std::size_t i) { return static_cast<GLfloat>(args[i].number); };
+  if (call == GLCall::Vertex3f && args.size() == 3) emulator_->vertex3f(number(0), number(1), number(2));
+  else if (call == GLCall::Normal3f && args.size() == 3) emulator_->normal3f(number(0), number(1), number(2));
+  else dispatchCall(*emulator_, call, args);
+  const std::uint32_t e = gl_.getError();
+  if (e != GL_NO_ERROR) {
+    ++errors_;
+    if (hooks_.onGLError) {
+      ScriptCommand cmd;  // made only for the report
+      cmd.line = line;
+      cmd.call = call;
+      cmd.args.assign(args.begin(), args.end());
+      hooks_.onGLError(cmd, e);
+    }
+  }
+  return true;
+}
+
 std::size_t ScriptExecutor::finish() {
   gl_.flushVertices();
   return errors_;

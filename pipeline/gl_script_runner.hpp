@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "pipeline/gl_context.hpp"
@@ -36,6 +37,10 @@ class ScriptExecutor {
   ScriptExecutor(GLContext& gl, const ScriptHooks& hooks);
   ~ScriptExecutor();
   void execute(const ScriptCommand& cmd);
+  // A call given by its parts, as execute runs it, without a command made
+  // for it (streamScriptAhead's packed calls): false, and nothing run, when
+  // a beforeCall hook needs the command itself.
+  bool executeCall(GLCall call, int line, std::span<const ScriptArg> args);
   // Closes an open draw; returns the number of GL errors raised.
   std::size_t finish();
 

@@ -131,6 +131,11 @@ void streamScriptAhead(std::string_view text, const Script& header, const std::f
 }
 
 void streamScriptAhead(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
+  streamScriptAhead(text, header, sink, nullptr);
+}
+
+void streamScriptAhead(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink,
+                       const PackedCallSink& call) {
   std::mutex mutex;
   std::condition_variable readerMayGo, batchReady;
   bool readerWaiting = false, callerWaiting = false;
@@ -213,15 +218,18 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
           sink(std::move(batch.whole[wholeAt++]));
           continue;
         }
+        // The arguments copied out of the batch's words (they hold a
+        // ScriptArg's bytes, not ScriptArg objects).
+        local.args.resize(h.argCount);
+        if (h.argCount > 0)
+          std::memcpy(static_cast<void*>(local.args.data()), &batch.words[at], h.argCount * sizeof(ScriptArg));
+        at += 2 * std::size_t{h.argCount};
+        if (call && h.kind == ScriptCommand::Kind::Call && call(h.call, h.line, local.args)) continue;
         local.kind = h.kind;
         local.line = h.line;
         local.call = h.call;
         local.label.clear();  // a sink may have left them moved from
         local.probe.reset();
-        local.args.resize(h.argCount);
-        if (h.argCount > 0)
-          std::memcpy(static_cast<void*>(local.args.data()), &batch.words[at], h.argCount * sizeof(ScriptArg));
-        at += 2 * std::size_t{h.argCount};
         sink(std::move(local));
       }
       batch.used = 0;

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "pipeline/gl_script.hpp"
@@ -154,6 +155,46 @@ TEST(ScriptStream, AheadHandsOnStreamScriptsCommandsInOrder) {
     }
   }
   EXPECT_GT(scripts.size(), 50u);
+}
+
+// With a call sink, each packed call is offered to it as its parts first;
+// the ones it takes do not reach the command sink, the rest do, and the
+// two together are streamScript's commands in order.
+TEST(ScriptStream, AheadOffersEachCallAsItsPartsAndSendsOnWhatIsNotTaken) {
+  const std::filesystem::path root(MPR_SOURCE_DIR);
+  std::vector<std::pair<std::string, std::string>> scripts = {{"long.gls", longScript(3000)}};
+  for (const char* folder : {"tests/conformance", "tests/probes/pass", "scenes"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder))
+      if (entry.path().extension() == ".gls")
+        scripts.push_back({entry.path().string(), readScriptText(entry.path().string())});
+  for (const auto& [path, text] : scripts) {
+    const Script header = checkScript(text, path);
+    std::vector<ScriptCommand> plain, ahead;
+    streamScript(text, header, [&](ScriptCommand&& c) { plain.push_back(c); });
+    std::size_t taken = 0, offered = 0;
+    ScriptText whole = ScriptText::ofString(text);
+    streamScriptAhead(
+        whole, header, [&](ScriptCommand&& c) { ahead.push_back(std::move(c)); },
+        [&](GLCall call, int line, std::span<const ScriptArg> args) {
+          ++offered;
+          if (line % 3 == 0) return false;  // declined: goes to the command sink
+          ScriptCommand c;
+          c.line = line;
+          c.call = call;
+          c.args.assign(args.begin(), args.end());
+          ahead.push_back(std::move(c));
+          ++taken;
+          return true;
+        });
+    ASSERT_EQ(ahead.size(), plain.size()) << path;
+    std::size_t calls = 0;
+    for (std::size_t i = 0; i < plain.size(); ++i) {
+      calls += plain[i].kind == ScriptCommand::Kind::Call;
+      expectSameCommand(ahead[i], plain[i], path + " command " + std::to_string(i));
+    }
+    EXPECT_EQ(offered, calls) << path;  // every call is offered (none is too long to pack here)
+    EXPECT_GT(taken, 0u) << path;
+  }
 }
 
 TEST(ScriptStream, AheadStopsWhenTheSinkThrowsAndReportsReadErrorsAfterTheCommandsBeforeThem) {
