@@ -40,43 +40,48 @@ struct ChannelPlanes {
 void setUpChannelPlanes(const LlvmpipeDepth::Triangle& t, int colorOffset, bool flat, bool fog, ChannelPlanes& out);
 
 struct TriangleShading {
+  // The fields a triangle of llvmpipe's planes reads come first, in the
+  // first lines of the set-up (a row thread reads them on another core from
+  // the one that wrote them); the exact weights, read only for MPR's own
+  // colours and the window map, after them.
+
+  // Depth: none (0), the window map's projective weights (mapZ, mapInvQ),
+  // or llvmpipe's planes (one plane evaluated directly; several chosen per
+  // pixel by LlvmpipeDepth::at).
+  enum class Depth : std::uint8_t { None, WindowMap, OnePlane, Planes } depth = Depth::None;
+  bool color = false;  // the fragments' colours are computed
+  // The colour is one value that every fragment takes as it is (flat
+  // shading, or Mesa's current colour): attr[0][0..3], not interpolated.
+  bool uniformColor = false;
+  // Where llvmpipe draws the triangle as one (not clipped, no window map):
+  // its own interpolation, which replaces the exact weights below but fog.
+  bool llvmpipeColor = false;
+  float a0 = 0.0f, dzdx = 0.0f, dzdy = 0.0f;  // Depth::OnePlane
+  float depthMax = 0.0f;
+  int fbHeight = 0;
+  const LlvmpipeDepth* planes = nullptr;  // Depth::Planes
+  const FogState* fog = nullptr;          // null when fog is off
+  ChannelPlanes channels;                 // llvmpipeColor
+
   // Barycentric weights of a pixel centre: from the snapped edge functions
   // (w_i / snappedArea) where the unsnapped triangle is degenerate, else
   // from the unsnapped window positions (exact* below).
   bool useSnapped = false;
   double snappedArea = 1.0;
   double xWin0 = 0.0, yWin0 = 0.0, ex1 = 0.0, ey1 = 0.0, ex2 = 0.0, ey2 = 0.0, exactArea = 1.0;
-
-  // Depth: none (0), the window map's projective weights (mapZ, mapInvQ),
-  // or llvmpipe's planes (one plane evaluated directly; several chosen per
-  // pixel by LlvmpipeDepth::at).
-  enum class Depth : std::uint8_t { None, WindowMap, OnePlane, Planes } depth = Depth::None;
-  std::array<double, 3> mapZ{}, mapInvQ{};
-  float a0 = 0.0f, dzdx = 0.0f, dzdy = 0.0f;  // Depth::OnePlane
-  const LlvmpipeDepth* planes = nullptr;      // Depth::Planes
-  float depthMax = 0.0f;
-  int fbHeight = 0;
+  std::array<double, 3> mapZ{}, mapInvQ{};  // Depth::WindowMap
 
   // Colour: perspective-correct interpolation of attr / w; attr[i] holds
   // the vertex's RGBA (front or back set) and its fog coordinate.
-  bool color = false;
   std::array<double, 3> invW{};
   std::array<std::array<float, 5>, 3> attr{};
   std::array<bool, 5> constant{};  // attr[0][i], attr[1][i], attr[2][i] the same float (bit for bit)
-  // The colour is one value that every fragment takes as it is (flat
-  // shading, or Mesa's current colour): attr[0][0..3], not interpolated.
-  bool uniformColor = false;
   // Every channel used is constant, the weights come from the unsnapped
   // positions with no window map, and 1/w varies by at most 2^20 over the
   // vertices: a span may then take the colour without exact weights
   // (flatColorHolds in span_shading.cpp); reciprocalArea = 1 / exactArea.
   bool flatColor = false;
   double reciprocalArea = 0.0;
-  const FogState* fog = nullptr;  // null when fog is off
-  // Where llvmpipe draws the triangle as one (not clipped, no window map):
-  // its own interpolation, which replaces everything above but fog.
-  bool llvmpipeColor = false;
-  ChannelPlanes channels;
 };
 
 // A triangle Mesa's draw module clips, drawn as llvmpipe's fan of it
