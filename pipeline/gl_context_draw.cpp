@@ -474,23 +474,22 @@ void GLContext::drawProcessed(PrimitiveType type, const std::vector<ClipVertex>&
   // With threads and no observer the triangles are set up here and queued
   // together at the end, for the row threads to draw (drawDeferred).
   deferring_ = rowQueue != nullptr && !fragmentObserver;
-  if (deferring_) {
-    // drawDeferred hands these vectors to the queued piece, so each piece
-    // starts them empty: sized once for it here (a triangle is one set-up
-    // unless MPR's clipper cuts it), not grown by doubling, which copied
-    // every set-up so far (half of the set-up's time on the bathroom trace).
-    deferred_.reserve(std::min(tris.size(), kTrianglesPerQueuedDraw));
-    deferredClipped_.reserve(std::min(tris.size(), kTrianglesPerQueuedDraw));
-  }
   LlvmpipeDepth depth{window, &userPlanes, {}};
   for (std::size_t k = 0; k < tris.size(); ++k) {
-    // A long draw is queued a piece at a time, so the row threads start on
-    // its first triangles while the rest are being set up (a draw of the
-    // bathroom trace has up to 4 000).
-    if (deferring_ && deferred_.size() >= kTrianglesPerQueuedDraw) {
-      drawDeferred();
-      deferred_.reserve(std::min(tris.size() - k, kTrianglesPerQueuedDraw));
-      deferredClipped_.reserve(std::min(tris.size() - k, kTrianglesPerQueuedDraw));
+    if (deferring_) {
+      // A long draw is queued a piece at a time, so the row threads start
+      // on its first triangles while the rest are being set up (a draw of
+      // the bathroom trace has up to 4 000).
+      if (deferred_.size() >= kTrianglesPerQueuedDraw) drawDeferred();
+      // drawDeferred hands these vectors to the queued piece, so each piece
+      // starts them empty: sized once for it (a triangle is one set-up
+      // unless MPR's clipper cuts it), not grown by doubling, which copied
+      // every set-up so far (half of the set-up's time on the bathroom trace).
+      if (deferred_.empty()) {
+        const std::size_t piece = std::min(tris.size() - k, kTrianglesPerQueuedDraw);
+        deferred_.reserve(piece);
+        deferredClipped_.reserve(piece);
+      }
     }
     const AssembledTriangle& t = tris[k];
     std::array<ClipVertex, 3> tri = {processed[t.v[0]], processed[t.v[1]], processed[t.v[2]]};

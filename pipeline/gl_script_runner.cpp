@@ -51,11 +51,7 @@ void ScriptExecutor::execute(const ScriptCommand& cmd) {
     case ScriptCommand::Kind::Call: {
       if (hooks_.beforeCall) hooks_.beforeCall(cmd);
       dispatch(*emulator_, cmd);
-      const std::uint32_t e = gl_.getError();
-      if (e != GL_NO_ERROR) {
-        ++errors_;
-        if (hooks_.onGLError) hooks_.onGLError(cmd, e);
-      }
+      countError(cmd.call, cmd.line, cmd.args, &cmd);
       break;
     }
   }
@@ -70,18 +66,21 @@ bool ScriptExecutor::executeCall(GLCall call, int line, std::span<const ScriptAr
   if (call == GLCall::Vertex3f && args.size() == 3) emulator_->vertex3f(number(0), number(1), number(2));
   else if (call == GLCall::Normal3f && args.size() == 3) emulator_->normal3f(number(0), number(1), number(2));
   else dispatchCall(*emulator_, call, args);
-  const std::uint32_t e = gl_.getError();
-  if (e != GL_NO_ERROR) {
-    ++errors_;
-    if (hooks_.onGLError) {
-      ScriptCommand cmd;  // made only for the report
-      cmd.line = line;
-      cmd.call = call;
-      cmd.args.assign(args.begin(), args.end());
-      hooks_.onGLError(cmd, e);
-    }
-  }
+  countError(call, line, args, nullptr);
   return true;
+}
+
+void ScriptExecutor::countError(GLCall call, int line, std::span<const ScriptArg> args, const ScriptCommand* whole) {
+  const std::uint32_t e = gl_.getError();
+  if (e == GL_NO_ERROR) return;
+  ++errors_;
+  if (!hooks_.onGLError) return;
+  if (whole) return hooks_.onGLError(*whole, e);
+  ScriptCommand cmd;  // made only for the report
+  cmd.line = line;
+  cmd.call = call;
+  cmd.args.assign(args.begin(), args.end());
+  hooks_.onGLError(cmd, e);
 }
 
 std::size_t ScriptExecutor::finish() {

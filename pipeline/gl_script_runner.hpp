@@ -45,6 +45,10 @@ class ScriptExecutor {
   std::size_t finish();
 
  private:
+  // The GL error the call just run raised, if any: counted and reported
+  // (with `whole`, the command it came as; else one made of its parts).
+  void countError(GLCall call, int line, std::span<const ScriptArg> args, const ScriptCommand* whole);
+
   GLContext& gl_;
   const ScriptHooks& hooks_;
   std::unique_ptr<GLEmulator> emulator_;
