@@ -101,8 +101,14 @@ class Parser {
   using Sink = std::function<void(ScriptCommand&&)>;
 
   Parser(const std::string& file) : file_(file) {}
-  Parser(const std::string& file, Mode mode, Sink sink = {}, int streamWidth = 0, int streamHeight = 0)
-      : file_(file), mode_(mode), sink_(std::move(sink)), streamWidth_(streamWidth), streamHeight_(streamHeight) {}
+  Parser(const std::string& file, Mode mode, Sink sink = {}, int streamWidth = 0, int streamHeight = 0,
+         ScriptCallSink callSink = {})
+      : file_(file),
+        mode_(mode),
+        sink_(std::move(sink)),
+        callSink_(std::move(callSink)),
+        streamWidth_(streamWidth),
+        streamHeight_(streamHeight) {}
 
   [[noreturn]] void fail(int line, int column, const std::string& message) const {
     throw ScriptError(file_, line, column, message);
@@ -268,6 +274,11 @@ class Parser {
         if (const RecentLines::Entry* kept = recentLines_.find(text, pos)) {
           pos += kept->size + 1;
           ++lineNo_;
+          if (callSink_) {  // its parts as kept: no command made
+            noteBlock(kept->call);
+            if (!outsideProbe_) callSink_(kept->call, lineNo_, std::span<const ScriptArg>(kept->args, kept->argCount));
+            continue;
+          }
           ScriptCommand& cmd = startCall(kept->call);
           cmd.args.assign(kept->args, kept->args + kept->argCount);
           emitCall(cmd);
@@ -685,9 +696,16 @@ class Parser {
   // A call line's command handed on; glBegin and glEnd open and close the
   // block an @expect may not stand in.
   void emitCall(ScriptCommand& cmd) {
-    if (cmd.call == GLCall::Begin) inBegin_ = true;
-    if (cmd.call == GLCall::End) inBegin_ = false;
+    noteBlock(cmd.call);
+    if (callSink_) {
+      if (!outsideProbe_) callSink_(cmd.call, cmd.line, cmd.args);
+      return;
+    }
     emit(script_, std::move(cmd));
+  }
+  void noteBlock(GLCall call) {
+    if (call == GLCall::Begin) inBegin_ = true;
+    if (call == GLCall::End) inBegin_ = false;
   }
 
   void emit(Script& script, ScriptCommand&& cmd) const {
@@ -720,6 +738,7 @@ class Parser {
   RecentLines recentLines_;                // the call lines parsed last, by their bytes
   Mode mode_ = Mode::Store;
   Sink sink_;
+  ScriptCallSink callSink_;  // Stream: the calls as their parts (sink_ the rest), when set
   int streamWidth_ = 0, streamHeight_ = 0;
   // What the lines read so far left (parseLines).
   Script script_;
@@ -803,6 +822,11 @@ Script scanScriptHeader(std::string_view text, const std::string& file) {
 
 void streamScript(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {
   Parser(header.file, Parser::Mode::Stream, sink, header.width, header.height).parse(text);
+}
+
+void streamScript(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink,
+                  const ScriptCallSink& call) {
+  Parser(header.file, Parser::Mode::Stream, sink, header.width, header.height, call).parse(text);
 }
 
 void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -103,5 +104,11 @@ Script scanScriptHeader(std::string_view text, const std::string& file);
 Script scanScriptHeader(ScriptText& text, const std::string& file);
 void streamScript(std::string_view text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
 void streamScript(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink);
+// The same, each call handed to `call` as its parts instead (no command made
+// for it: a call line seen before goes on as the arguments kept for its
+// bytes), the directives to `sink`. In the order streamScript hands them on.
+using ScriptCallSink = std::function<void(GLCall call, int line, std::span<const ScriptArg> args)>;
+void streamScript(ScriptText& text, const Script& header, const std::function<void(ScriptCommand&&)>& sink,
+                  const ScriptCallSink& call);
 
 }  // namespace mpr

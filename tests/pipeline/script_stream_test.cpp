@@ -3,7 +3,8 @@
 // pictures) and scenes/, the streamed commands are parseScript's, in the
 // same order, field for field, probes placed alike; checkScript keeps no
 // command and reports a bad script's error where parseScript does, and
-// scanScriptHeader gives its header;
+// scanScriptHeader gives its header; with a call sink, the calls reach it
+// as their parts, in the same order;
 // streamScriptAhead (the parsing on a thread of its own) hands on
 // streamScript's commands, stops when the sink throws and reports a read
 // error after the commands before it. What `mpr gl` with more than one
@@ -259,6 +260,57 @@ std::string readingError(const std::string& text) {
   const std::string header = headerError(text);
   if (!header.empty()) return header;
   return errorOf([&] { streamScriptAhead(text, scanScriptHeader(text, "s.gls"), [](ScriptCommand&&) {}); });
+}
+
+// streamScript with a call sink: every call reaches it as its parts (none
+// as a command), the directives the command sink, together streamScript's
+// commands in its order; a call line repeated comes from the lines kept
+// by their bytes, so the long script's repeats are covered too. Once a
+// streamed probe falls outside the window, nothing more reaches either
+// sink, and the error is the one streamScript alone throws.
+TEST(ScriptStream, ACallSinkGetsEachCallAsItsPartsInTheCommandsOrder) {
+  const std::filesystem::path root(MPR_SOURCE_DIR);
+  std::vector<std::pair<std::string, std::string>> scripts = {
+      {"long.gls", longScript(3000)},
+      // (The comment at the end: the line kept for its bytes is found only
+      // with 64 bytes after it.)
+      {"outside.gls", "@framebuffer 8 8\nglFinish\nglFinish\n@expect stencil 300 0 1\nglFinish\n@pass p\nglFlush\n# " +
+                          std::string(70, 'c') + "\n"}};
+  for (const char* folder : {"tests/conformance", "tests/probes/pass", "scenes"})
+    for (const auto& entry : std::filesystem::directory_iterator(root / folder))
+      if (entry.path().extension() == ".gls")
+        scripts.push_back({entry.path().string(), readScriptText(entry.path().string())});
+  for (const auto& [path, text] : scripts) {
+    const Script header = scanScriptHeader(text, path);
+    std::vector<ScriptCommand> plain, parts;
+    const std::string plainError = errorOf([&] { streamScript(text, header, [&](ScriptCommand&& c) { plain.push_back(c); }); });
+    std::size_t callsAsCommands = 0;
+    ScriptText whole = ScriptText::ofString(text);
+    const std::string partsError = errorOf([&] {
+      streamScript(
+          whole, header,
+          [&](ScriptCommand&& c) {
+            callsAsCommands += c.kind == ScriptCommand::Kind::Call;
+            parts.push_back(std::move(c));
+          },
+          [&](GLCall call, int line, std::span<const ScriptArg> args) {
+            ScriptCommand c;
+            c.line = line;
+            c.call = call;
+            c.args.assign(args.begin(), args.end());
+            parts.push_back(std::move(c));
+          });
+    });
+    EXPECT_EQ(partsError, plainError) << path;
+    EXPECT_EQ(callsAsCommands, 0u) << path;
+    ASSERT_EQ(parts.size(), plain.size()) << path;
+    for (std::size_t i = 0; i < plain.size(); ++i)
+      expectSameCommand(parts[i], plain[i], path + " command " + std::to_string(i));
+    if (path == "outside.gls") {
+      EXPECT_FALSE(plainError.empty());
+      EXPECT_EQ(plain.size(), 2u);  // the two calls before the probe
+    }
+  }
 }
 
 TEST(ScriptHeader, ThrowsCheckScriptsErrorOnlyBeforeTheFirstCall) {
