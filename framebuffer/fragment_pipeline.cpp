@@ -1,7 +1,12 @@
 #include "framebuffer/fragment_pipeline.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "framebuffer/fragment_span_stages.hpp"
 #include "util/cpu_dispatch.hpp"
@@ -157,9 +162,74 @@ MPR_CPU_CLONES std::uint32_t specialisedSpan(const FragmentState& s, Framebuffer
   return spanBody<kAlpha, kStencil, kDepth, kBlend, kColor, 0>(s, fb, span);
 }
 
+// Whether the stencil test passes for any of the `count` bytes at st, the
+// test as span::compare takes it (ref OP stored & mask).
+bool anyStencilPasses(const StencilState& s, const std::uint8_t* st, int count, int x, int width) {
+  const std::uint32_t mask = s.valueMask, ref = s.ref & mask;
+#if defined(__SSE2__)
+  // Sixteen bytes at a time: the tests as unsigned byte compares (a >= b is
+  // max(a, b) == a). The loads stay in the span's row, which its thread
+  // owns: a span shorter than sixteen is read with the bytes before it (or
+  // after it, at the row's left edge) and those lanes masked off; a longer
+  // one ends with the sixteen bytes before its end, overlapping.
+  // (A stored byte's bits above 8 are zero: the mask's there change nothing.)
+  if (ref <= 0xFF && width >= 16) {
+    const __m128i m = _mm_set1_epi8(static_cast<char>(mask & 0xFF)), r = _mm_set1_epi8(static_cast<char>(ref));
+    const auto passes = [&](__m128i v) {
+      v = _mm_and_si128(v, m);
+      const auto ge = [](__m128i a, __m128i b) { return _mm_cmpeq_epi8(_mm_max_epu8(a, b), a); };
+      switch (s.func) {
+        case CompareFunc::Never: return 0;
+        case CompareFunc::Less: return ~_mm_movemask_epi8(ge(r, v)) & 0xFFFF;
+        case CompareFunc::Equal: return _mm_movemask_epi8(_mm_cmpeq_epi8(r, v));
+        case CompareFunc::Lequal: return _mm_movemask_epi8(ge(v, r));
+        case CompareFunc::Greater: return ~_mm_movemask_epi8(ge(v, r)) & 0xFFFF;
+        case CompareFunc::Notequal: return ~_mm_movemask_epi8(_mm_cmpeq_epi8(r, v)) & 0xFFFF;
+        case CompareFunc::Gequal: return _mm_movemask_epi8(ge(r, v));
+        case CompareFunc::Always: return 0xFFFF;
+      }
+      return 0xFFFF;  // (not reached: the state holds one of the eight)
+    };
+    const auto load = [](const std::uint8_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+    if (count < 16) {
+      const int before = std::min(x, 16 - count);  // bytes of the row read before the span
+      const int lanes = ((1 << count) - 1) << before;
+      return (passes(load(st - before)) & lanes) != 0;
+    }
+    int k = 0;
+    for (; k + 16 <= count; k += 16)
+      if (passes(load(st + k))) return true;
+    return k < count && passes(load(st + count - 16)) != 0;
+  }
+#else
+  (void)x;
+  (void)width;
+#endif
+  bool any = false;
+  for (int k = 0; k < count; ++k) any = any || compare(s.func, ref, static_cast<std::uint32_t>(st[k]) & mask);
+  return any;
+}
+
+// spanBody's stencil stage alone, for fragments not yet shaded: in the
+// passes of a mirror's or a shadow's level most of a scene's triangles fall
+// where the stencil holds another level, and their shading is wasted.
+bool stencilRejectsAll(const FragmentState& s, Framebuffer& fb, int x, int y, int count) {
+  constexpr int N = FragmentSpan::kCapacity;
+  std::uint8_t* const st = &fb.stencil(x, y);
+  if (anyStencilPasses(s.stencil, st, count, x, fb.width())) return false;
+  const std::uint32_t max = fb.profile().stencilMax(), m = s.stencil.writeMask & max;
+  if (s.stencil.sfail == StencilOp::Keep || m == 0) return true;
+  alignas(64) std::uint32_t stored[N], onFail[N];
+  for (int k = 0; k < count; ++k) stored[k] = st[k];
+  span::stencilOpValues(s.stencil.sfail, count, stored, s.stencil.ref, max, onFail);
+  for (int k = 0; k < count; ++k) st[k] = static_cast<std::uint8_t>((stored[k] & ~m) | (onFail[k] & m));
+  return true;
+}
+
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend, ColorWrites kColor>
 constexpr FragmentPipeline kPipeline{specialised<kAlpha, kStencil, kDepth, kBlend, kColor>,
-                                     specialisedSpan<kAlpha, kStencil, kDepth, kBlend, kColor>};
+                                     specialisedSpan<kAlpha, kStencil, kDepth, kBlend, kColor>,
+                                     kStencil && !kAlpha ? stencilRejectsAll : nullptr};
 
 template <bool kAlpha, bool kStencil, bool kDepth, bool kBlend>
 FragmentPipeline byColor(ColorWrites c) {

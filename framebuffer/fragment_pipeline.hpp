@@ -33,9 +33,19 @@ static_assert(FragmentSpan::kCapacity % 8 == 0);
 // one by one; returns how many were written.
 using SpanFunction = std::uint32_t (*)(const FragmentState& s, Framebuffer& fb, const FragmentSpan& span);
 
+// The stencil test of `count` (at most kCapacity) fragments at x, x + 1, ...
+// of row y, taken before they are shaded: when every one fails it, their
+// stencil-fail writes are done and it returns true (each is tested and none
+// written; its depth and colour could change nothing); otherwise it writes
+// nothing and returns false.
+using StencilRejectFunction = bool (*)(const FragmentState& s, Framebuffer& fb, int x, int y, int count);
+
 struct FragmentPipeline {
   FragmentFunction fragment;
   SpanFunction span;
+  // Null where the stencil test is not the first test (stencil off, or the
+  // alpha test before it, which needs the shaded alpha).
+  StencilRejectFunction stencilRejectsAll = nullptr;
 };
 
 // The variant of processFragment for `s` (alpha test, stencil test, depth

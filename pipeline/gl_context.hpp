@@ -382,6 +382,10 @@ class GLContext : private detail::RowThreads {
   // The same for a span of fragments: one call of the state's span function,
   // or fragment by fragment in the span's order when it is observed.
   void submitSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally);
+  // Before a span is shaded: true when the state's stencil test, taken first,
+  // fails for every pixel of it (x, y, count); those are then done, counted
+  // as tested (FragmentPipeline::stencilRejectsAll). Never for an observed draw.
+  bool stencilRejectsSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally);
   // Draws now: rows(tally, n, k) for k < n on the row threads after what is
   // queued, and waits (without threads, or with an observer set,
   // rows(tally, 1, 0) here); the tallies summed into counters_.

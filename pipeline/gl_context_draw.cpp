@@ -556,6 +556,13 @@ inline void GLContext::submitFragment(Fragment& f, const DrawState& state, Fragm
   if (state.pipeline.fragment(state.frag, fb_, f) == FragmentFate::Written) ++tally.written;
 }
 
+inline bool GLContext::stencilRejectsSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally) {
+  if (!state.pipeline.stencilRejectsAll || state.observed) return false;  // observed: each fragment seen whole
+  if (!state.pipeline.stencilRejectsAll(state.frag, fb_, span.x, span.y, span.count)) return false;
+  tally.tested += static_cast<std::uint64_t>(span.count);
+  return true;
+}
+
 inline void GLContext::submitSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally) {
   if (state.observed) {  // fragment by fragment, in the span's order, each one seen
     for (int i = 0; i < span.count; ++i) {
@@ -747,6 +754,7 @@ void GLContext::drawRows(const ClippedTriangleRows& job, const DrawState& state,
           fragments.x = covered.x + done;
           fragments.y = covered.y;
           fragments.count = std::min(FragmentSpan::kCapacity, covered.count - done);
+          if (stencilRejectsSpan(fragments, state, tally)) continue;
           std::array<std::int64_t, 3> w;
           for (int i = 0; i < 3; ++i) w[i] = covered.w[i] + done * covered.stepX[i];
           shadeSpan(job.shading, w, covered.stepX, fragments);
@@ -820,6 +828,7 @@ void GLContext::drawRows(const FanTriangleRows& job, const DrawState& state, Fra
       fragments.x = static_cast<int>(from);
       fragments.y = y;
       fragments.count = static_cast<int>(std::min<std::int64_t>(FragmentSpan::kCapacity, spanHi - from + 1));
+      if (stencilRejectsSpan(fragments, state, tally)) continue;
       shadeFanSpan(job.shading, fragments);
       submitSpan(fragments, state, tally);
     }

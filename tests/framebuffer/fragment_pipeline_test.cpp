@@ -150,5 +150,69 @@ TEST(FragmentPipeline, EverySpanVariantDoesWhatProcessFragmentDoesInOrder) {
   EXPECT_EQ(variants, 48);
 }
 
+// The stencil test taken before shading (stencilRejectsAll): true exactly
+// when no fragment of the run passes the stencil test, and then the buffers
+// the fragments one by one leave (whatever their depth and colour); false
+// otherwise, with nothing written. Runs of every length at every column, on
+// rows of 73 pixels, of 16 (the vector loads' width) and of 9 (narrower
+// than it: the plain loop), each function and mask, stencils that often
+// hold one value per row (so that whole runs fail) and often not.
+TEST(FragmentPipeline, TheStencilTestBeforeShadingRejectsExactlyTheRunsThatFailItEverywhere) {
+  std::mt19937 rng(1997);
+  std::array<int, 8> rejected{}, kept{};
+  for (const int width : {kSpanWidth, 16, 9})
+    for (int trial = 0; trial < 3000; ++trial) {
+      FragmentState s = variantState(2 | static_cast<int>(rng() & 4) | static_cast<int>(rng() & 8),
+                                     {true, true, true, true});
+      randomizeTests(s, rng);
+      s.stencil.func = static_cast<CompareFunc>(trial % 8);
+      if (trial % 3 == 0) s.stencil.valueMask = ~0u;  // glStencilFunc's default: above the buffer's bits
+      const StencilRejectFunction reject = chooseFragmentPipeline(s).stencilRejectsAll;
+      ASSERT_NE(reject, nullptr);
+      Framebuffer expected(width, kSpanHeight, mesaProfile()), found(width, kSpanHeight, mesaProfile());
+      fillRandom(expected, trial);
+      // Half the rows' values the reference (Equal passes, Notequal fails).
+      const std::uint8_t a = static_cast<std::uint8_t>(rng() % 2 == 0 ? s.stencil.ref : rng()),
+                         b = static_cast<std::uint8_t>(rng());
+      for (int y = 0; y < kSpanHeight; ++y)
+        for (int x = 0; x < width; ++x)
+          expected.stencil(x, y) = trial % 2 == 0 ? a : (rng() % 8 == 0 ? b : a);
+      found = expected;
+      const Framebuffer before = expected;
+      const int x = static_cast<int>(rng() % static_cast<unsigned>(width)), y = static_cast<int>(rng() % kSpanHeight);
+      const int count = 1 + static_cast<int>(rng() % static_cast<unsigned>(std::min(FragmentSpan::kCapacity, width - x)));
+      bool anyPasses = false;
+      for (int i = 0; i < count; ++i) {
+        anyPasses = anyPasses || stencilTest(s.stencil, expected.stencil(x + i, y));
+        const Fragment f{x + i, y, static_cast<std::uint32_t>(rng() & 0xFFFFFF),
+                         Rgba8{static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()),
+                               static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng())},
+                         1.0f};
+        ASSERT_TRUE(processFragment(s, expected, f) != FragmentFate::Written || anyPasses);
+      }
+      const bool r = reject(s, found, x, y, count);
+      ASSERT_EQ(r, !anyPasses) << "width " << width << " trial " << trial;
+      ASSERT_NO_FATAL_FAILURE(expectSameBuffers(found, r ? expected : before, width, trial));
+      ++(r ? rejected : kept)[trial % 8];
+    }
+  // Both outcomes for every function that can have both (Never always
+  // rejects, Always never does).
+  for (int f = 1; f < 7; ++f) {
+    EXPECT_GT(rejected[static_cast<std::size_t>(f)], 100) << "function " << f;
+    EXPECT_GT(kept[static_cast<std::size_t>(f)], 100) << "function " << f;
+  }
+  EXPECT_EQ(kept[0], 0);
+  EXPECT_EQ(rejected[7], 0);
+}
+
+// Only where the stencil test comes first and is on.
+TEST(FragmentPipeline, TheStencilTestIsTakenBeforeShadingOnlyWhereItIsTheFirstTest) {
+  for (int bits = 0; bits < 16; ++bits) {
+    const FragmentState s = variantState(bits, {true, true, true, true});
+    const bool first = (bits & 2) != 0 && (bits & 1) == 0;
+    EXPECT_EQ(chooseFragmentPipeline(s).stencilRejectsAll != nullptr, first) << "variant " << bits;
+  }
+}
+
 }  // namespace
 }  // namespace mpr
