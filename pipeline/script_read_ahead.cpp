@@ -32,8 +32,8 @@ constexpr std::size_t kBatchesInFlight = 16;  // parsed ahead at most: some thir
 // then it parses a run of batches, not one per wake-up (on two cores shared
 // with the row threads, each wake-up may wait for a time slice).
 constexpr std::size_t kReaderResumesAt = kBatchesInFlight / 2;
-// Lines of a batch fetched ahead of the command being unpacked.
-constexpr std::size_t kPrefetchWords = 64;
+// Slots of a batch fetched ahead of the command being unpacked (eight lines).
+constexpr std::size_t kPrefetchSlots = 32;
 // The reader refills the batch the caller handed back longest ago, and only
 // once more than this many wait: its lines have left the calling core's
 // cache by then, so writing them does not wait for that core to give them
@@ -53,10 +53,11 @@ void swapCommands(ScriptCommand& a, ScriptCommand& b) {
   if (a.probe || b.probe) a.probe.swap(b.probe);
 }
 
-// A batch holds its commands packed one after another in words: a
-// command's header, then its arguments as they are (a vertex's three in
-// 56 bytes, in one or two cache lines). The calling thread unpacks each into
-// a command of its own. So the lines that cross from the reading core to
+// A batch holds its commands packed one after another in slots of a
+// ScriptArg's size: a command's header, then its arguments as they are (a
+// vertex in 64 bytes, one or two cache lines). The calling thread hands a
+// call on as a view of its arguments in the batch (no copy), and unpacks
+// any other command into a command of its own. So the lines that cross from the reading core to
 // the calling one are few, and the reader writes none the caller's cache
 // holds but the batch's own: slots of ScriptCommand swapped to and fro,
 // their argument vectors written by one core and read by the other, made
@@ -69,26 +70,29 @@ struct PackedHeader {
   ScriptCommand::Kind kind;
   std::uint16_t argCount;  // kWhole: the batch's next command in `whole`
 };
-static_assert(sizeof(PackedHeader) == sizeof(std::uint64_t));
-static_assert(sizeof(ScriptArg) == 2 * sizeof(std::uint64_t) && std::is_trivially_copyable_v<ScriptArg>);
+static_assert(sizeof(PackedHeader) <= sizeof(ScriptArg) && sizeof(ScriptArg) == 16 &&
+              std::is_trivially_copyable_v<ScriptArg>);
 constexpr std::uint16_t kWhole = 0xffff;
 
-// A batch's word written past the reader's cache (a non-temporal store):
-// the batch's lines were last read on the calling core, and a plain store
-// first fetched each back from there (a copy of a vertex's words was a
-// quarter of the reader's time on the bathroom trace; its CPU time over 15
-// interleaved runs 0.70 -> 0.64 s). handOver's fence orders these stores
-// before the batch is handed on.
-inline void streamWord(std::uint64_t* to, std::uint64_t w) {
+// A batch's slot written past the reader's cache (a non-temporal store of
+// its 16 bytes; a slot is 16-byte aligned, as operator new aligns a
+// vector's storage, static_assert below): the batch's lines were last read on the calling core, and a
+// plain store first fetched each back from there (a copy of a vertex's
+// words was a quarter of the reader's time on the bathroom trace; its CPU
+// time over 15 interleaved runs 0.70 -> 0.64 s). handOver's fence orders
+// these stores before the batch is handed on. (GCC's vector types may
+// alias any object: the slot's bytes are written as a ScriptArg's.)
+static_assert(__STDCPP_DEFAULT_NEW_ALIGNMENT__ >= 16);
+inline void streamSlot(ScriptArg* to, const void* from) {
 #if defined(__SSE2__)
-  _mm_stream_si64(reinterpret_cast<long long*>(to), static_cast<long long>(w));
+  _mm_stream_si128(reinterpret_cast<__m128i*>(to), _mm_loadu_si128(static_cast<const __m128i*>(from)));
 #else
-  *to = w;
+  std::memcpy(static_cast<void*>(to), from, sizeof(ScriptArg));
 #endif
 }
 
 struct Batch {
-  std::vector<std::uint64_t> words;  // its size is its capacity; `used` of them hold commands
+  std::vector<ScriptArg> slots;  // its size is its capacity; `used` of them hold commands
   std::size_t used = 0;
   std::size_t commands = 0;
   std::vector<ScriptCommand> whole;  // slots reused from batch to batch (swapped with the parser's)
@@ -119,23 +123,14 @@ struct Batch {
   void addPacked(ScriptCommand::Kind kind, GLCall call, int line, std::span<const ScriptArg> args,
                  std::uint16_t argCount = 0) {
     if (argCount != kWhole) argCount = static_cast<std::uint16_t>(args.size());
-    const std::size_t need = 1 + 2 * args.size();
-    if (used + need > words.size()) words.resize(std::max<std::size_t>(2 * words.size(), used + need + 4096));
+    const std::size_t need = 1 + args.size();
+    if (used + need > slots.size()) slots.resize(std::max<std::size_t>(2 * slots.size(), used + need + 2048));
+    alignas(16) unsigned char header[sizeof(ScriptArg)] = {};
     const PackedHeader h{line, call, kind, argCount};
-    std::uint64_t hw;
-    std::memcpy(&hw, &h, sizeof h);
-    std::uint64_t* to = words.data() + used;  // (a local: the stores would reload the vector's pointer)
-    streamWord(to, hw);
-    // (No copy of no arguments: an empty span's data() may be null.)
-    if (!args.empty()) {
-      const std::size_t n = 2 * args.size();
-      const auto* from = reinterpret_cast<const unsigned char*>(args.data());
-      for (std::size_t k = 0; k < n; ++k) {
-        std::uint64_t w;
-        std::memcpy(&w, from + 8 * k, 8);
-        streamWord(to + 1 + k, w);
-      }
-    }
+    std::memcpy(header, &h, sizeof h);
+    ScriptArg* to = slots.data() + used;  // (a local: the stores would reload the vector's pointer)
+    streamSlot(to, header);
+    for (std::size_t k = 0; k < args.size(); ++k) streamSlot(to + 1 + k, &args[k]);
     used += need;
     ++commands;
   }
@@ -169,7 +164,7 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
     std::size_t batchCommands = kFirstBatchCommands;
     auto handOver = [&] {
 #if defined(__SSE2__)
-      _mm_sfence();  // the batch's streamed words before the hand-over (streamWord)
+      _mm_sfence();  // the batch's streamed slots before the hand-over (streamSlot)
 #endif
       std::unique_lock lock(mutex);
       if (full.size() >= kBatchesInFlight && !stop) {
@@ -238,25 +233,25 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
       }
       std::size_t at = 0, wholeAt = 0;
       for (std::size_t i = 0; i < batch.commands; ++i) {
-        // The parser wrote these on another core: the words a few commands
+        // The parser wrote these on another core: the slots a few commands
         // ahead are fetched while this one runs (the loads of a vertex's
         // three numbers were a tenth of the calling thread's time on the
         // bathroom trace).
-        if (at + kPrefetchWords < batch.used) __builtin_prefetch(&batch.words[at + kPrefetchWords]);
+        if (at + kPrefetchSlots < batch.used) __builtin_prefetch(&batch.slots[at + kPrefetchSlots]);
         PackedHeader h;
-        std::memcpy(&h, &batch.words[at], sizeof h);
+        std::memcpy(&h, &batch.slots[at], sizeof h);
         ++at;
         if (h.argCount == kWhole) {
           sink(std::move(batch.whole[wholeAt++]));
           continue;
         }
-        // The arguments copied out of the batch's words (they hold a
-        // ScriptArg's bytes, not ScriptArg objects).
-        local.args.resize(h.argCount);
-        if (h.argCount > 0)
-          std::memcpy(static_cast<void*>(local.args.data()), &batch.words[at], h.argCount * sizeof(ScriptArg));
-        at += 2 * std::size_t{h.argCount};
-        if (call && h.kind == ScriptCommand::Kind::Call && call(h.call, h.line, local.args)) continue;
+        // The arguments where they lie in the batch (a copy of them into a
+        // command's vector, and the library's memcpy, were a tenth of the
+        // calling thread's instructions on the bathroom trace).
+        const std::span<const ScriptArg> args(batch.slots.data() + at, h.argCount);
+        at += h.argCount;
+        if (call && h.kind == ScriptCommand::Kind::Call && call(h.call, h.line, args)) continue;
+        local.args.assign(args.begin(), args.end());
         local.kind = h.kind;
         local.line = h.line;
         local.call = h.call;
