@@ -17,6 +17,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "util/helper_thread.hpp"
+
 namespace mpr {
 namespace {
 
@@ -160,6 +162,7 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
   std::exception_ptr readError;
 
   std::thread reader([&] {
+    markHelperThread();  // the calling thread goes first on a shared core
     Batch batch;
     std::size_t batchCommands = kFirstBatchCommands;
     auto handOver = [&] {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "util/helper_thread.hpp"
+
 namespace mpr {
 
 RowQueue::RowQueue(int threads)
@@ -47,6 +49,7 @@ void RowQueue::wait() {
 }
 
 void RowQueue::work(int phase) {
+  markHelperThread();  // the calling thread goes first on a shared core
   const std::size_t k = static_cast<std::size_t>(phase);
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {

@@ -2,7 +2,7 @@
 // thread, with its phase, in the order pushed on each thread; push returns
 // before the task has run; wait() waits for all of it and throws what a task
 // threw; more than kCapacity tasks in flight make push wait instead of
-// queueing without bound.
+// queueing without bound; its threads give way to the calling thread.
 #include "util/row_queue.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +10,14 @@
 #include <atomic>
 #include <future>
 #include <stdexcept>
+#include <thread>
 #include <vector>
+
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
+#include "util/helper_thread.hpp"
 
 namespace mpr {
 namespace {
@@ -84,6 +91,30 @@ TEST(RowQueue, DestructionRunsWhatIsQueued) {
     for (int t = 0; t < 100; ++t) queue.push([&ran](int) { ++ran; });
   }
   EXPECT_EQ(ran.load(), 200);
+}
+
+// The queue's threads are helpers (markHelperThread): on Linux they run
+// under SCHED_BATCH, the calling thread as it was.
+TEST(RowQueue, ItsThreadsGiveWayToTheCallingThread) {
+#if defined(__linux__)
+  int marked = -1;
+  std::thread probe([&] {
+    markHelperThread();
+    marked = sched_getscheduler(0);
+  });
+  probe.join();
+  if (marked != SCHED_BATCH) GTEST_SKIP() << "this system refuses SCHED_BATCH";
+  const int caller = sched_getscheduler(0);
+  RowQueue queue(3);
+  std::vector<int> policies(3, -1);
+  queue.push([&](int k) { policies[static_cast<std::size_t>(k)] = sched_getscheduler(0); });
+  queue.wait();
+  for (int p : policies) EXPECT_EQ(p, SCHED_BATCH);
+  EXPECT_EQ(sched_getscheduler(0), caller);
+  EXPECT_NE(caller, SCHED_BATCH);
+#else
+  GTEST_SKIP() << "helpers are marked on Linux only";
+#endif
 }
 
 TEST(RowQueue, HardwareThreadsIsAtLeastOne) { EXPECT_GE(hardwareThreads(), 1); }
