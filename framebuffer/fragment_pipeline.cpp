@@ -213,16 +213,22 @@ bool anyStencilPasses(const StencilState& s, const std::uint8_t* st, int count, 
 // spanBody's stencil stage alone, for fragments not yet shaded: in the
 // passes of a mirror's or a shadow's level most of a scene's triangles fall
 // where the stencil holds another level, and their shading is wasted.
-bool stencilRejectsAll(const FragmentState& s, Framebuffer& fb, int x, int y, int count) {
+// The stencil-fail operation on `count` bytes at st (a call of its own: its
+// arrays would otherwise give every rejection test a frame of them).
+[[gnu::noinline]] void applyStencilFail(const StencilState& s, std::uint32_t max, std::uint8_t* st, int count) {
   constexpr int N = FragmentSpan::kCapacity;
-  std::uint8_t* const st = &fb.stencil(x, y);
-  if (anyStencilPasses(s.stencil, st, count, x, fb.width())) return false;
-  const std::uint32_t max = fb.profile().stencilMax(), m = s.stencil.writeMask & max;
-  if (s.stencil.sfail == StencilOp::Keep || m == 0) return true;
+  const std::uint32_t m = s.writeMask & max;
   alignas(64) std::uint32_t stored[N], onFail[N];
   for (int k = 0; k < count; ++k) stored[k] = st[k];
-  span::stencilOpValues(s.stencil.sfail, count, stored, s.stencil.ref, max, onFail);
+  span::stencilOpValues(s.sfail, count, stored, s.ref, max, onFail);
   for (int k = 0; k < count; ++k) st[k] = static_cast<std::uint8_t>((stored[k] & ~m) | (onFail[k] & m));
+}
+
+bool stencilRejectsAll(const FragmentState& s, Framebuffer& fb, int x, int y, int count) {
+  std::uint8_t* const st = &fb.stencil(x, y);
+  if (anyStencilPasses(s.stencil, st, count, x, fb.width())) return false;
+  const std::uint32_t max = fb.profile().stencilMax();
+  if (s.stencil.sfail != StencilOp::Keep && (s.stencil.writeMask & max) != 0) applyStencilFail(s.stencil, max, st, count);
   return true;
 }
 
