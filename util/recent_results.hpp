@@ -49,11 +49,23 @@ class RecentResults {
     Value value;
   };
 
+  // Each pair of words times its own odd constant, the products summed and
+  // mixed once: multiplies side by side, not a chain of one per word (a
+  // vertex's twelve words were a chain of twelve, per vertex of a trace).
   static std::size_t slotOf(const Key& key) {
-    std::uint32_t words[sizeof(Key) / sizeof(std::uint32_t)];
+    constexpr std::size_t kWords = sizeof(Key) / sizeof(std::uint32_t);
+    static constexpr std::uint64_t kOdd[8] = {0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full, 0x165667B19E3779F9ull,
+                                              0xD6E8FEB86659FD93ull, 0xFF51AFD7ED558CCDull, 0xC4CEB9FE1A85EC53ull,
+                                              0x85EBCA77C2B2AE63ull, 0x27D4EB2F165667C5ull};
+    std::uint32_t words[kWords];
     std::memcpy(words, &key, sizeof(Key));
     std::uint64_t h = 0;
-    for (std::uint32_t w : words) h = (h ^ w) * 0x9E3779B97F4A7C15ull;
+    for (std::size_t i = 0; i < kWords; i += 2) {
+      const std::uint64_t pair = words[i] | (i + 1 < kWords ? std::uint64_t{words[i + 1]} << 32 : 0);
+      h += pair * kOdd[(i / 2) % 8];
+    }
+    h ^= h >> 31;
+    h *= 0x9E3779B97F4A7C15ull;
     return static_cast<std::size_t>(h >> 40) & (kSlots - 1);
   }
 
