@@ -394,6 +394,10 @@ class GLContext : private detail::RowThreads {
   // The colours a triangle wound `ccw` (GL window space) takes: 0 front, 4
   // back (two-sided lighting); -1 when culled.
   int facingColorOffset(bool ccw) const;
+  // Whether drawTriangle would take `tri` unclipped to rasterizeClippedTriangle
+  // and drop it there at the facing test (culled, no area, or a position not
+  // finite): then nothing of its set-up is needed. Without the window map.
+  bool culledBeforeSetUp(const std::array<ClipVertex, 3>& tri, const WindowTransform& window) const;
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
   // work(rows) over the region's rows: queued for the row threads, one row at
   // a time, or here without them (clears and accumulation: a pixel's result
