@@ -20,6 +20,7 @@
 #include <bit>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <random>
 #include <span>
 #include <vector>
@@ -134,13 +135,22 @@ std::string longScript(int lines) {
   return text;
 }
 
-TEST(ScriptStream, AheadHandsOnStreamScriptsCommandsInOrder) {
+using NamedScripts = std::vector<std::pair<std::string, std::string>>;
+
+// `scripts`, then every script of the repository's folders `folders`
+// (paths from the source tree), each with its text.
+NamedScripts withRepositoryScripts(NamedScripts scripts, std::initializer_list<const char*> folders) {
   const std::filesystem::path root(MPR_SOURCE_DIR);
-  std::vector<std::pair<std::string, std::string>> scripts = {{"long.gls", longScript(3000)}};
-  for (const char* folder : {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "scenes"})
+  for (const char* folder : folders)
     for (const auto& entry : std::filesystem::directory_iterator(root / folder))
       if (entry.path().extension() == ".gls")
         scripts.push_back({entry.path().string(), readScriptText(entry.path().string())});
+  return scripts;
+}
+
+TEST(ScriptStream, AheadHandsOnStreamScriptsCommandsInOrder) {
+  const NamedScripts scripts = withRepositoryScripts(
+      {{"long.gls", longScript(3000)}}, {"tests/conformance", "tests/conformance/repro", "tests/probes/pass", "scenes"});
   for (const auto& [path, text] : scripts) {
     const Script header = checkScript(text, path);
     std::vector<ScriptCommand> plain, ahead, aheadMoved;
@@ -162,12 +172,8 @@ TEST(ScriptStream, AheadHandsOnStreamScriptsCommandsInOrder) {
 // the ones it takes do not reach the command sink, the rest do, and the
 // two together are streamScript's commands in order.
 TEST(ScriptStream, AheadOffersEachCallAsItsPartsAndSendsOnWhatIsNotTaken) {
-  const std::filesystem::path root(MPR_SOURCE_DIR);
-  std::vector<std::pair<std::string, std::string>> scripts = {{"long.gls", longScript(3000)}};
-  for (const char* folder : {"tests/conformance", "tests/probes/pass", "scenes"})
-    for (const auto& entry : std::filesystem::directory_iterator(root / folder))
-      if (entry.path().extension() == ".gls")
-        scripts.push_back({entry.path().string(), readScriptText(entry.path().string())});
+  const NamedScripts scripts =
+      withRepositoryScripts({{"long.gls", longScript(3000)}}, {"tests/conformance", "tests/probes/pass", "scenes"});
   for (const auto& [path, text] : scripts) {
     const Script header = checkScript(text, path);
     std::vector<ScriptCommand> plain, ahead;
@@ -269,17 +275,13 @@ std::string readingError(const std::string& text) {
 // streamed probe falls outside the window, nothing more reaches either
 // sink, and the error is the one streamScript alone throws.
 TEST(ScriptStream, ACallSinkGetsEachCallAsItsPartsInTheCommandsOrder) {
-  const std::filesystem::path root(MPR_SOURCE_DIR);
-  std::vector<std::pair<std::string, std::string>> scripts = {
-      {"long.gls", longScript(3000)},
-      // (The comment at the end: the line kept for its bytes is found only
-      // with 64 bytes after it.)
-      {"outside.gls", "@framebuffer 8 8\nglFinish\nglFinish\n@expect stencil 300 0 1\nglFinish\n@pass p\nglFlush\n# " +
-                          std::string(70, 'c') + "\n"}};
-  for (const char* folder : {"tests/conformance", "tests/probes/pass", "scenes"})
-    for (const auto& entry : std::filesystem::directory_iterator(root / folder))
-      if (entry.path().extension() == ".gls")
-        scripts.push_back({entry.path().string(), readScriptText(entry.path().string())});
+  const NamedScripts scripts = withRepositoryScripts(
+      {{"long.gls", longScript(3000)},
+       // (The comment at the end: the line kept for its bytes is found only
+       // with 64 bytes after it.)
+       {"outside.gls", "@framebuffer 8 8\nglFinish\nglFinish\n@expect stencil 300 0 1\nglFinish\n@pass p\nglFlush\n# " +
+                           std::string(70, 'c') + "\n"}},
+      {"tests/conformance", "tests/probes/pass", "scenes"});
   for (const auto& [path, text] : scripts) {
     const Script header = scanScriptHeader(text, path);
     std::vector<ScriptCommand> plain, parts;
