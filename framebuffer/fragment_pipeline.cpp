@@ -210,9 +210,6 @@ bool anyStencilPasses(const StencilState& s, const std::uint8_t* st, int count, 
   return any;
 }
 
-// spanBody's stencil stage alone, for fragments not yet shaded: in the
-// passes of a mirror's or a shadow's level most of a scene's triangles fall
-// where the stencil holds another level, and their shading is wasted.
 // The stencil-fail operation on `count` bytes at st (a call of its own: its
 // arrays would otherwise give every rejection test a frame of them).
 [[gnu::noinline]] void applyStencilFail(const StencilState& s, std::uint32_t max, std::uint8_t* st, int count) {
@@ -224,6 +221,9 @@ bool anyStencilPasses(const StencilState& s, const std::uint8_t* st, int count, 
   for (int k = 0; k < count; ++k) st[k] = static_cast<std::uint8_t>((stored[k] & ~m) | (onFail[k] & m));
 }
 
+// spanBody's stencil stage alone, for fragments not yet shaded: in the
+// passes of a mirror's or a shadow's level most of a scene's triangles fall
+// where the stencil holds another level, and their shading is wasted.
 bool stencilRejectsAll(const FragmentState& s, Framebuffer& fb, int x, int y, int count) {
   std::uint8_t* const st = &fb.stencil(x, y);
   if (anyStencilPasses(s.stencil, st, count, x, fb.width())) return false;

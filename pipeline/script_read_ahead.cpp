@@ -59,9 +59,9 @@ void swapCommands(ScriptCommand& a, ScriptCommand& b) {
 // ScriptArg's size: a command's header, then its arguments as they are (a
 // vertex in 64 bytes, one or two cache lines). The calling thread hands a
 // call on as a view of its arguments in the batch (no copy), and unpacks
-// any other command into a command of its own. So the lines that cross from the reading core to
-// the calling one are few, and the reader writes none the caller's cache
-// holds but the batch's own: slots of ScriptCommand swapped to and fro,
+// any other command into a command of its own. So the lines that cross
+// from the reading core to the calling one are few, and the reader writes
+// none the caller's cache holds but the batch's own: slots of ScriptCommand swapped to and fro,
 // their argument vectors written by one core and read by the other, made
 // every line of a command cross twice, and the reader ran twice as long on
 // two cores as on one (0.47 against 0.22 s of CPU on the bathroom trace).
@@ -78,10 +78,10 @@ constexpr std::uint16_t kWhole = 0xffff;
 
 // A batch's slot written past the reader's cache (a non-temporal store of
 // its 16 bytes; a slot is 16-byte aligned, as operator new aligns a
-// vector's storage, static_assert below): the batch's lines were last read on the calling core, and a
-// plain store first fetched each back from there (a copy of a vertex's
-// words was a quarter of the reader's time on the bathroom trace; its CPU
-// time over 15 interleaved runs 0.70 -> 0.64 s). handOver's fence orders
+// vector's storage, static_assert below): the batch's lines were last
+// read on the calling core, and a plain store first fetched each back from
+// there (a copy of a vertex's words was a quarter of the reader's time on
+// the bathroom trace; its CPU time over 15 interleaved runs 0.70 -> 0.64 s). handOver's fence orders
 // these stores before the batch is handed on. (GCC's vector types may
 // alias any object: the slot's bytes are written as a ScriptArg's.)
 static_assert(__STDCPP_DEFAULT_NEW_ALIGNMENT__ >= 16);
@@ -122,6 +122,8 @@ struct Batch {
     c.args.assign(args.begin(), args.end());
     add(c);
   }
+  // The header and the arguments; argCount kWhole marks a whole command's
+  // header (its arguments are in `whole`, none packed).
   void addPacked(ScriptCommand::Kind kind, GLCall call, int line, std::span<const ScriptArg> args,
                  std::uint16_t argCount = 0) {
     if (argCount != kWhole) argCount = static_cast<std::uint16_t>(args.size());
