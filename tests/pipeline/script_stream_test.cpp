@@ -282,7 +282,10 @@ TEST(ScriptStream, ACallSinkGetsEachCallAsItsPartsInTheCommandsOrder) {
        {"outside.gls", "@framebuffer 8 8\nglFinish\nglFinish\n@expect stencil 300 0 1\nglFinish\n@pass p\nglFlush\n# " +
                            std::string(70, 'c') + "\n"}},
       {"tests/conformance", "tests/probes/pass", "scenes"});
-  for (const auto& [path, text] : scripts) {
+  for (const auto& named : scripts) {
+    // (Names, not a structured binding: clang 14's C++20 captures none in a lambda.)
+    const std::string& path = named.first;
+    const std::string& text = named.second;
     const Script header = scanScriptHeader(text, path);
     std::vector<ScriptCommand> plain, parts;
     const std::string plainError = errorOf([&] { streamScript(text, header, [&](ScriptCommand&& c) { plain.push_back(c); }); });
