@@ -36,6 +36,13 @@ inline bool snapLikeLlvmpipeRaster(const ClipVertex& v, const WindowTransform& w
   return true;
 }
 
+// Whether signedArea2 of snapped positions this close to the origin is
+// exact: coordinates below 2^30 keep each product below 2^62.
+inline bool areaCannotOverflow(const SnappedVertex& v) {
+  constexpr std::int64_t kLimit = std::int64_t{1} << 30;
+  return v.x > -kLimit && v.x < kLimit && v.y > -kLimit && v.y < kLimit;
+}
+
 // Whether the fragments' colour is read: a colour channel is written, or
 // the alpha test looks at alpha.
 bool needsColor(const FragmentState& s) {
@@ -533,7 +540,16 @@ MPR_CPU_CLONES bool GLContext::culledBeforeSetUp(const std::array<ClipVertex, 3>
   // position is not finite, no area, or culled.
   std::array<SnappedVertex, 3> snapped;
   bool finite = true;
-  for (std::size_t i = 0; i < 3; ++i) finite = snapLikeLlvmpipeRaster(tri[i], window, fb_.height(), snapped[i]) && finite;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!snapLikeLlvmpipeRaster(tri[i], window, fb_.height(), snapped[i])) {
+      finite = false;
+    } else if (!areaCannotOverflow(snapped[i])) {
+      // A vertex near the eye plane (w a hair above 0) snaps far enough out
+      // that the area's products would overflow: the full path decides
+      // (such a triangle is clipped, so this one would not drop it anyway).
+      return false;
+    }
+  }
   if (finite) {
     const std::int64_t area = signedArea2(snapped[0], snapped[1], snapped[2]);
     if (area != 0 && facingColorOffset(area > 0) >= 0) return false;

@@ -8,9 +8,13 @@
 // culled, and so is the number of fragments tested. Random triangles of
 // every kind the path tells apart: inside the view volume, across it
 // (llvmpipe's fans), behind the eye (w < 0), wholly outside, degenerate,
-// cut by a user clip plane, wound either way, with either front face.
+// a hair in front of the eye (w = 1e-7: its window position is so far out
+// that the facing test's products would overflow, which the sanitizer
+// build makes fatal), cut by a user clip plane, wound either way, with
+// either front face.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -35,14 +39,21 @@ Counted run(const std::string& text) {
   return {gl.framebuffer().stencilData(), gl.counters()};
 }
 
+// Every float exactly (std::to_string would write 1e-7 as 0.000000).
+std::string number(float v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", v);
+  return text;
+}
+
 TEST(CullBeforeSetUp, CullingEachFaceSplitsTheFragmentsOfNoCulling) {
   std::mt19937 random(1994);
   std::uniform_real_distribution<float> inside(-0.9f, 0.9f), across(-2.5f, 2.5f), w(0.2f, 3.0f);
   std::uint64_t frontAndBack = 0, tested = 0;
   for (int trial = 0; trial < 24; ++trial) {
     std::string draw = "glBegin GL_TRIANGLES\n";
-    for (int t = 0; t < 60; ++t) {
-      const int kind = t % 6;  // 0-1 inside, 2 across, 3 behind, 4 outside, 5 degenerate
+    for (int t = 0; t < 70; ++t) {
+      const int kind = t % 7;  // 0-1 inside, 2 across, 3 behind, 4 outside, 5 degenerate, 6 near the eye
       float x[3], y[3], z[3], ww[3];
       for (int v = 0; v < 3; ++v) {
         ww[v] = w(random);
@@ -52,6 +63,7 @@ TEST(CullBeforeSetUp, CullingEachFaceSplitsTheFragmentsOfNoCulling) {
         z[v] = inside(random) * ww[v];
         if (kind == 3 && v == 0) ww[v] = -ww[v];
         if (kind == 4) x[v] += 3.0f * ww[v];
+        if (kind == 6 && v == 0) ww[v] = 1e-7f;
       }
       if (kind == 5) {
         x[2] = x[0];
@@ -60,8 +72,7 @@ TEST(CullBeforeSetUp, CullingEachFaceSplitsTheFragmentsOfNoCulling) {
         ww[2] = ww[0];
       }
       for (int v = 0; v < 3; ++v)
-        draw += "glVertex4f " + std::to_string(x[v]) + " " + std::to_string(y[v]) + " " + std::to_string(z[v]) + " " +
-                std::to_string(ww[v]) + "\n";
+        draw += "glVertex4f " + number(x[v]) + " " + number(y[v]) + " " + number(z[v]) + " " + number(ww[v]) + "\n";
     }
     draw += "glEnd\n";
     std::string head =
