@@ -14,7 +14,6 @@
 // either front face.
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "pipeline/gl_context.hpp"
 #include "pipeline/gl_script.hpp"
 #include "pipeline/gl_script_runner.hpp"
+#include "util/number_text.hpp"
 
 namespace mpr {
 namespace {
@@ -37,13 +37,6 @@ Counted run(const std::string& text) {
   GLContext gl(script.width, script.height, mesaProfile());
   runScript(script, gl);
   return {gl.framebuffer().stencilData(), gl.counters()};
-}
-
-// Every float exactly (std::to_string would write 1e-7 as 0.000000).
-std::string number(float v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", v);
-  return text;
 }
 
 TEST(CullBeforeSetUp, CullingEachFaceSplitsTheFragmentsOfNoCulling) {
@@ -72,7 +65,9 @@ TEST(CullBeforeSetUp, CullingEachFaceSplitsTheFragmentsOfNoCulling) {
         ww[2] = ww[0];
       }
       for (int v = 0; v < 3; ++v)
-        draw += "glVertex4f " + number(x[v]) + " " + number(y[v]) + " " + number(z[v]) + " " + number(ww[v]) + "\n";
+        // Each float exactly (std::to_string would write 1e-7 as 0.000000).
+        draw += "glVertex4f " + shortestText(x[v]) + " " + shortestText(y[v]) + " " + shortestText(z[v]) + " " +
+                shortestText(ww[v]) + "\n";
     }
     draw += "glEnd\n";
     std::string head =
