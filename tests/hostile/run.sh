@@ -1,10 +1,12 @@
-# Issue 15's regression corpus: every hostile case in cases.tsv, run on the
-# real binary. $1 is mpr, $2 the source tree. Each case gets a fresh work
+# The hostile-input corpus (issues 15 and 48): every case of one table
+# (cases.tsv, or the table named by $3), run on the real binary. $1 is mpr,
+# $2 the source tree. Each case gets a fresh work
 # folder; a failing run must leave every file (and link) of it as it was,
 # a passing one may only add $W/out/new. The corpus itself is checked too.
 set -uo pipefail
 MPR="$1"
 H="$2/tests/hostile"
+TABLE="${3:-cases.tsv}"
 ROOT="$(mktemp -d)"
 trap 'rm -rf "$ROOT"' EXIT
 failures=0
@@ -37,7 +39,7 @@ while IFS=$'\t' read -r name status fragment command; do
   rm -rf "$W/in" && mkdir "$W/in"
   after="$(state "$W")"
   [[ "$after" == "$before" ]] || fail "$name: files changed: $(diff <(echo "$before") <(echo "$after") | head -8)"
-done < "$H/cases.tsv"
+done < "$H/$TABLE"
 [[ "$(state "$H")" == "$corpus_before" ]] || fail "the corpus folder itself was changed"
 if ((failures)); then echo "$failures failure(s) in $n cases" >&2; exit 1; fi
 echo "ok: $n cases"
