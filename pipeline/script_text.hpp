@@ -25,7 +25,8 @@ class ScriptText {
   static ScriptText ofFile(const std::string& path, std::size_t pieceBytes = InputFilePieces::kPieceBytes);
 
   // The next piece: whole lines ending in '\n' (`last` false), or the text
-  // after the last '\n', maybe empty (`last` true). False after that.
+  // after the last '\n', maybe empty (`last` true). False after that. A
+  // UTF-8 byte-order mark at the very start of the text is not handed on.
   bool next(std::string_view& piece, bool& last);
   // Back to the start: every pass over the script (its check, its run)
   // reads it from here.
@@ -36,6 +37,7 @@ class ScriptText {
   std::string_view text_;
   std::size_t pieceBytes_ = 0, at_ = 0;
   bool handedLast_ = false;
+  bool atStart_ = true;  // the next piece is the text's first: a UTF-8 byte-order mark is skipped
   std::unique_ptr<InputFilePieces> file_;
 };
 

@@ -10,6 +10,7 @@
 
 #include "pipeline/gl_script.hpp"
 #include "pipeline/gl_script_runner.hpp"
+#include "pipeline/script_text.hpp"
 
 namespace mpr {
 namespace {
@@ -66,6 +67,35 @@ TEST(GLScript, ErrorsCarryLineAndColumn) {
     EXPECT_EQ(e.column(), 31);
     EXPECT_STREQ(e.what(), "f.gls:2:31: unknown GL enumerant 'GL_REPLAC' (argument 3 of glStencilOp)");
   }
+}
+
+// Issue 48: a UTF-8 byte-order mark before the first line (as some editors
+// save files) is skipped; it made line 1's first token an unknown call.
+// Columns on line 1 count from after it; one anywhere else is a token's.
+TEST(GLScript, SkipsALeadingByteOrderMark) {
+  const Script s = parseScript("\xEF\xBB\xBF@framebuffer 8 4\nglClear GL_COLOR_BUFFER_BIT\n", "b.gls");
+  EXPECT_EQ(s.width, 8);
+  EXPECT_EQ(s.height, 4);
+  ASSERT_EQ(s.commands.size(), 1u);
+  EXPECT_EQ(s.commands[0].line, 2);
+  const Script call = parseScript("\xEF\xBB\xBFglClearStencil 7\n", "b.gls");
+  ASSERT_EQ(call.commands.size(), 1u);
+  EXPECT_EQ(call.commands[0].args[0].column, 16);
+  try {
+    parseScript("\xEF\xBB\xBFglClearStencil x\n", "b.gls");
+    FAIL() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_EQ(e.column(), 16);
+  }
+  // Only at the very start: a second one is text.
+  EXPECT_THROW(parseScript("glFinish\n\xEF\xBB\xBFglFinish\n", "b.gls"), ScriptError);
+  EXPECT_THROW(parseScript("\xEF\xBB\xBF\xEF\xBB\xBFglFinish\n", "b.gls"), ScriptError);
+  // Read in pieces (a file a piece at a time), and read again after a rewind.
+  const std::string text = "\xEF\xBB\xBFglFinish\nglFlush\n";
+  ScriptText pieces = ScriptText::ofString(text, 1);
+  EXPECT_EQ(checkScript(pieces, "b.gls").width, 256);
+  EXPECT_EQ(checkScript(pieces, "b.gls").width, 256);
 }
 
 TEST(GLScript, RunsOnAContextAndReportsGLErrors) {
