@@ -4,6 +4,7 @@
 // vertex normals.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -14,7 +15,9 @@ inline constexpr std::uint64_t kMaxMeshBytes = std::uint64_t{512} << 20;
 
 // Throws std::runtime_error with the reason when the file cannot be read: not
 // a regular file, over the size limit, header counts the file cannot hold,
-// no faces, or a vertex that is not finite.
-Mesh loadMeshFile(const std::string& path);
+// no faces, or a vertex that is not finite. What OpenMesh reported while
+// reading (faces it dropped or changed) is added to `warnings` as MPR's own
+// lines, never written to standard error.
+Mesh loadMeshFile(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace mpr

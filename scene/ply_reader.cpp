@@ -163,19 +163,31 @@ class PlyParser {
   // Every element item takes at least a byte per value in binary (two in
   // ASCII: the value and a blank), so a 40-byte file cannot have 2e9 vertices
   // reserved for it.
+  // The refusal names the element whose count the bytes cannot hold: an
+  // "element edge 2000000000" was reported as the vertex and face counts.
   void checkSizes() const {
     const std::uint64_t left = bytes_.size() - body_ + (format_ == Format::Ascii ? 1 : 0);
     std::uint64_t needed = 0, faces = 0;
     for (const Element& e : elements_)
       if (e.name == "face") faces = e.count;
+    const Element* over = nullptr;
+    bool before = false;  // earlier elements take bytes too
     for (const Element& e : elements_) {
       std::uint64_t item = 0;
       for (const Property& p : e.properties)
         item += format_ == Format::Ascii ? 2 : sizeOf(p.list ? p.count : p.value);
+      before = needed > 0;
       needed += e.count * std::max<std::uint64_t>(item, 1);  // below 2^32 * 2^40: no overflow
-      if (needed > left || e.count > left) break;
+      if (needed > left || e.count > left) {
+        over = &e;
+        break;
+      }
     }
-    if (needed > left || vertices_ > left || faces > left)
+    if (over && over->name != "vertex" && over->name != "face")
+      refuseLine(bodyLine_, 1, "its element '" + over->name + "' claims " + std::to_string(over->count) +
+                                   " items, more than its " + std::to_string(bytes_.size()) + " bytes can hold" +
+                                   (before ? " after the elements before it" : ""));
+    if (over || vertices_ > left || faces > left)
       refuseLine(bodyLine_, 1, meshCountsTooLarge(vertices_, faces, bytes_.size()));
   }
 

@@ -1,5 +1,6 @@
 #include "scene/scene_loader.hpp"
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -41,7 +43,7 @@ const std::vector<KeySpec> kTopKeys = {
 };
 const std::vector<KeySpec> kCameraKeys = {
     {"position", "vec3", "eye position"}, {"look_at", "vec3", "point looked at"},
-    {"up", "vec3", "up direction, default [0, 1, 0]"}, {"fov", "number (0, 180)", "vertical field of view, degrees"},
+    {"up", "vec3", "up direction, default [0, 1, 0]"}, {"fov", "number in [0.05, 180)", "vertical field of view, degrees, default 45"},
     {"near", "number > 0", "near plane distance"}, {"far", "number > near", "far plane distance"},
     {"aperture", "number >= 0", "lens radius for depth of field (images accumulated: render.antialias_samples), default 0"},
     {"focal_distance", "number > 0", "distance in focus, default the distance to look_at"},
@@ -125,9 +127,24 @@ const std::vector<KeySpec> kExpectKeys = {
 };
 
 struct Override {
-  std::string text;  // "key.path=value" as given
-  YAML::Node node;   // the parsed value, placed in the document
+  std::string text;                 // "key.path=value" as given
+  YAML::Node node;                  // the parsed value, placed in the document
+  std::vector<YAML::Node> created;  // the mappings its path made on the way
 };
+
+// Whether `at` is `root` or lies inside it (a key or a value at any depth):
+// an error there is the --set's that gave `root`, not the file's.
+bool within(const YAML::Node& at, const YAML::Node& root) {
+  if (at.is(root)) return true;
+  if (root.IsSequence()) {
+    for (const YAML::Node& c : root)
+      if (within(at, c)) return true;
+  } else if (root.IsMap()) {
+    for (auto it = root.begin(); it != root.end(); ++it)
+      if (within(at, it->first) || within(at, it->second)) return true;
+  }
+  return false;
+}
 
 class Loader {
  public:
@@ -136,8 +153,12 @@ class Loader {
 
   [[noreturn]] void fail(const YAML::Node& at, const std::string& message) const {
     // A value that came from --set has no place in the file: name the option.
-    for (const Override& o : overrides_)
-      if (at.is(o.node)) throw SceneError("--set " + o.text, 1, 1, message);
+    // The last --set first: a later one may have replaced what an earlier gave.
+    for (auto o = overrides_.rbegin(); o != overrides_.rend(); ++o) {
+      if (within(at, o->node)) throw SceneError("--set " + o->text, 1, 1, message);
+      for (const YAML::Node& c : o->created)
+        if (at.is(c)) throw SceneError("--set " + o->text, 1, 1, message);
+    }
     const YAML::Mark m = at.Mark();
     if (m.is_null() && !overrides_.empty()) {  // a key --set created
       std::string all;
@@ -146,6 +167,21 @@ class Loader {
     }
     throw SceneError(file_, m.line + 1, m.column + 1, message);
   }
+
+  bool givenBySet(const YAML::Node& at) const {
+    return std::any_of(overrides_.begin(), overrides_.end(), [&](const Override& o) { return within(at, o.node); });
+  }
+
+  // A warning, placed as fail places an error; loadSceneText writes them
+  // once the scene has loaded.
+  void warn(const YAML::Node& at, const std::string& message) const {
+    try {
+      fail(at, "warning: " + message);
+    } catch (const SceneError& e) {
+      warnings_.push_back(e.what());
+    }
+  }
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   // YAML forbids a key twice in one mapping; yaml-cpp keeps both and reads
   // the first, so `scale: 1` then `scale: 0` would silently drop the second.
@@ -177,8 +213,23 @@ class Loader {
     }
   }
 
+  // A number, a boolean: a plain scalar only. yaml-cpp hands a quoted
+  // scalar ('45', "true") over with the same text as a plain one, so without
+  // this a string stood in for a number wherever one was read; its tag ("!"
+  // for a quoted scalar, "?" for a plain one) tells them apart.
+  void checkPlain(const YAML::Node& n, const std::string& what, const std::string& kind) const {
+    const std::string& tag = n.Tag();
+    if (tag == "?" || tag.empty()) return;
+    if (tag == "!")
+      fail(n, what + " must be " + kind + ", not the quoted string '" + n.Scalar() + "' (write it without quotes)");
+    if (kind == "a number" && (tag == "tag:yaml.org,2002:float" || tag == "tag:yaml.org,2002:int")) return;
+    if (kind == "true or false" && tag == "tag:yaml.org,2002:bool") return;
+    fail(n, what + " must be " + kind + ", not a value tagged '" + tag + "'");
+  }
+
   double number(const YAML::Node& n, const std::string& what) const {
     if (!n.IsScalar()) fail(n, what + " must be a number");
+    checkPlain(n, what, "a number");
     const std::string s = n.Scalar();
     // YAML's own spellings of the non-finite values.
     static const char* const nonFinite[] = {".nan", ".NaN", ".NAN", ".inf", ".Inf", ".INF", "+.inf", "+.Inf",
@@ -213,6 +264,7 @@ class Loader {
   }
   bool boolean(const YAML::Node& n, const std::string& what) const {
     if (!n.IsScalar()) fail(n, what + " must be true or false");
+    checkPlain(n, what, "true or false");
     const std::string s = n.Scalar();
     if (s == "true" || s == "yes" || s == "on") return true;
     if (s == "false" || s == "no" || s == "off") return false;
@@ -244,6 +296,7 @@ class Loader {
     if (const YAML::Node a = doc["ambient"]) s.ambient = rgb(a, "ambient");
     if (const YAML::Node ls = doc["lights"]) {
       if (!ls.IsSequence()) fail(ls, "lights must be a list");
+      checkCount(ls, "lights", kMaxSceneLights);
       for (const YAML::Node& l : ls) s.lights.push_back(readLight(l));
     }
     std::map<std::string, int> materialIndex;
@@ -259,6 +312,7 @@ class Loader {
     }
     if (const YAML::Node os = doc["objects"]) {
       if (!os.IsSequence()) fail(os, "objects must be a list");
+      checkCount(os, "objects", kMaxSceneObjects);
       for (const YAML::Node& o : os) s.objects.push_back(readObject(o, materialIndex, s));
     }
     checkLimits(doc, s);
@@ -310,7 +364,7 @@ class Loader {
     if (n["position"]) c.position = vec3(n["position"], "camera.position");
     if (n["look_at"]) c.lookAt = vec3(n["look_at"], "camera.look_at");
     if (n["up"]) c.up = vec3(n["up"], "camera.up");
-    if (n["fov"]) c.fovY = static_cast<float>(number(n["fov"], "camera.fov", 0.0, 180.0, true));
+    if (n["fov"]) c.fovY = fieldOfView(n["fov"]);
     if (n["near"]) c.near = static_cast<float>(number(n["near"], "camera.near", 0.0, 1e30, true));
     if (n["far"]) c.far = static_cast<float>(number(n["far"], "camera.far", 0.0, 1e30, true));
     if (n["aperture"]) c.aperture = static_cast<float>(number(n["aperture"], "camera.aperture", 0.0, 1e6));
@@ -322,6 +376,24 @@ class Loader {
     const Vec3 f = c.lookAt - c.position;
     const Vec3 side = glm::cross(f, c.up);
     if (glm::dot(side, side) == 0.0f) fail(n["up"] ? n["up"] : n, "camera.up must not be parallel to the view direction");
+  }
+
+  // (0, 180) as the format says, as the float the camera keeps: 180 (or a
+  // number that rounds to it) projects the scene onto the window's centre
+  // (cot 90 degrees is 6e-17), and below kMinFieldOfView float clipping
+  // leaves bands of the window empty (1e-50 is 0 as a float, and
+  // gluPerspective then does nothing; 1e-8 drew black bands).
+  float fieldOfView(const YAML::Node& n) const {
+    const double v = number(n, "camera.fov");
+    std::ostringstream min;
+    min << kMinFieldOfView;
+    if (!(v >= kMinFieldOfView))
+      fail(n, "camera.fov must be at least " + min.str() + " degrees (narrower, float rounding in clipping leaves bands of the window empty), not " +
+                  n.Scalar());
+    if (v >= 180.0) fail(n, "camera.fov must be below 180, not " + n.Scalar());
+    const float f = static_cast<float>(v);
+    if (f >= 180.0f) fail(n, "camera.fov must be below 180, not " + n.Scalar() + " (180 as a float)");
+    return f;
   }
 
   PointLight readLight(const YAML::Node& n) const {
@@ -396,7 +468,10 @@ class Loader {
     checkKeys(n, kObjectKeys, "an object");
     SceneObject o;
     o.line = n.Mark().line + 1;
-    o.name = n["name"] ? string(n["name"], "object name") : "object at line " + std::to_string(o.line);
+    // An object a --set gave has no line in the file: its place in the list.
+    o.name = n["name"]          ? string(n["name"], "object name")
+             : givenBySet(n) ? "object " + std::to_string(s.objects.size()) + " of the list"
+                             : "object at line " + std::to_string(o.line);
     const std::string where = "object '" + o.name + "'";
     if (n["primitive"] && n["mesh"]) fail(n["mesh"], where + " gives both primitive and mesh; give one");
     if (!n["primitive"] && !n["mesh"]) fail(n, where + " needs a primitive or a mesh");
@@ -432,11 +507,13 @@ class Loader {
         if (ec || std::filesystem::path(rel).is_absolute() || inside.empty() || *inside.begin() == "..")
           fail(n["mesh"], where + " mesh '" + rel + "' lies outside the scene's folder, which --confine refuses");
       }
+      std::vector<std::string> said;
       try {
-        o.mesh = loadMeshFile(path.string());
+        o.mesh = loadMeshFile(path.string(), &said);
       } catch (const std::exception& e) {
         fail(n["mesh"], where + ": " + e.what());
       }
+      for (const std::string& w : said) warn(n["mesh"], where + ": mesh file '" + path.string() + "': " + w);
       checkTriangleBudget(n["mesh"], where, o.mesh.triangles.size());
     }
     triangles_ += o.mesh.triangles.size();
@@ -505,6 +582,7 @@ class Loader {
   // ---- expect: (docs/scene-format.md, "Expectations") --------------------
   void readExpectations(const YAML::Node& list, Scene& s) const {
     if (!list.IsSequence()) fail(list, "expect must be a list of expectations, like - {after: end, stencil: [0, 0], value: ZERO}");
+    checkCount(list, "expect", kMaxSceneExpectations);
     for (const YAML::Node& n : list) s.expectations.push_back(readExpectation(n, s));
   }
 
@@ -692,6 +770,14 @@ class Loader {
                    std::to_string(kMaxSceneTriangles) + " a scene may hold (about 3 GB of mesh)");
   }
 
+  // A list whose entries multiply the render's work, bounded before any is read.
+  void checkCount(const YAML::Node& list, const std::string& key, std::size_t max) const {
+    if (list.size() > max)
+      fail(list, key + " lists " + std::to_string(list.size()) + " entries, more than the " + std::to_string(max) +
+                     " a scene may hold (each multiplies the render's passes; YAML aliases repeat an entry at no cost in "
+                     "the file)");
+  }
+
   void checkLimits(const YAML::Node& doc, const Scene& s) const {
     // render.tessellation splits lit faces at render time: the scene it
     // makes is held to the same budget as the one the file describes.
@@ -756,6 +842,7 @@ class Loader {
   std::vector<Override> overrides_;
   bool confine_ = false;                  // meshes only from inside the scene's folder
   mutable std::uint64_t triangles_ = 0;  // the scene's so far, for the budget
+  mutable std::vector<std::string> warnings_;
 };
 
 Override applyOverride(YAML::Node& doc, const std::string& kv) {
@@ -763,27 +850,92 @@ Override applyOverride(YAML::Node& doc, const std::string& kv) {
   if (eq == std::string::npos || eq == 0) throw SceneError("--set", 1, 1, "'" + kv + "' must be key.path=value");
   const std::string path = kv.substr(0, eq), value = kv.substr(eq + 1);
   std::vector<std::string> keys;
+  std::vector<std::size_t> columns;  // each key's, 1-based in kv
   for (std::size_t start = 0;;) {
     const std::size_t dot = path.find('.', start);
     keys.push_back(path.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    columns.push_back(start + 1);
     if (dot == std::string::npos) break;
     start = dot + 1;
   }
+  const std::string where = "--set " + kv;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (keys[i].empty())
+      throw SceneError(where, 1, static_cast<int>(columns[i]), "'" + path + "' has an empty key; keys are joined by single dots");
   YAML::Node parsed;
   try {
     parsed = YAML::Load(value);
   } catch (const YAML::Exception& e) {
     throw SceneError("--set", 1, static_cast<int>(eq) + 2, "'" + value + "' is not a YAML value: " + e.msg);
   }
-  // yaml-cpp nodes are handles: walk down by copying handles, then assign.
+  Override o{kv, {}, {}};
+  // yaml-cpp nodes are handles (assigning one to another rebinds the
+  // first's node): walk down by copying handles, then assign. A list is
+  // entered by its index (objects.0.scale): yaml-cpp's operator[] with a
+  // text key turned the list into a mapping {"0": ...}, which the loader
+  // then refused for not being a list, against the scene file.
   std::vector<YAML::Node> chain{doc};
-  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
-    YAML::Node next = chain.back()[keys[i]];
-    if (!next.IsDefined() || next.IsNull()) chain.back()[keys[i]] = YAML::Node(YAML::NodeType::Map);
-    chain.push_back(chain.back()[keys[i]]);
+  std::string name;  // the path so far
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::string& key = keys[i];
+    const bool last = i + 1 == keys.size();
+    const int column = static_cast<int>(columns[i]);
+    YAML::Node at = chain.back();
+    if (at.IsSequence()) {
+      const bool digits = key.size() <= 9 && key.find_first_not_of("0123456789") == std::string::npos;
+      const std::size_t index = digits ? std::stoul(key) : 0;
+      if (!digits || index >= at.size())
+        throw SceneError(where, 1, column,
+                         name + " is a list of " + std::to_string(at.size()) + (at.size() == 1 ? " entry" : " entries") +
+                             (at.size() == 0 ? "" : ": give an index from 0 to " + std::to_string(at.size() - 1)) +
+                             ", not '" + key + "'");
+      if (last) {
+        at[index] = parsed;
+        o.node.reset(at[index]);
+        return o;
+      }
+      chain.push_back(at[index]);
+    } else if (at.IsScalar()) {
+      throw SceneError(where, 1, column, name + " is a value ('" + at.Scalar() + "'), not a mapping with a key '" + key + "'");
+    } else {  // a mapping, or null (an empty document): operator[] makes it a mapping
+      if (last) {
+        at[key] = parsed;
+        o.node.reset(at[key]);
+        return o;
+      }
+      const YAML::Node next = at[key];
+      if (!next.IsDefined() || next.IsNull()) {
+        at[key] = YAML::Node(YAML::NodeType::Map);
+        o.created.push_back(at[key]);
+      }
+      chain.push_back(at[key]);
+    }
+    name += (name.empty() ? "" : ".") + key;
   }
-  chain.back()[keys.back()] = parsed;
-  return {kv, chain.back()[keys.back()]};
+  return o;
+}
+
+// Where a text's second document starts: its "---" (yaml-cpp's parser
+// reports each document's first token; LoadAll keeps only the nodes, whose
+// marks are their first values').
+YAML::Mark secondDocumentStart(const std::string& text, const YAML::Node& second) {
+  struct Starts : YAML::EventHandler {
+    std::vector<YAML::Mark> marks;
+    void OnDocumentStart(const YAML::Mark& m) override { marks.push_back(m); }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+  } starts;
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  while (starts.marks.size() < 2 && parser.HandleNextDocument(starts)) {
+  }
+  return starts.marks.size() > 1 ? starts.marks[1] : second.Mark();
 }
 
 }  // namespace
@@ -792,14 +944,28 @@ Scene loadSceneText(const std::string& text, const std::string& file, const std:
                     bool confine) {
   YAML::Node doc;
   try {
-    doc = YAML::Load(text);
+    // Every document, not the first only: YAML::Load read up to a second
+    // document's "---" and dropped the rest of the file without a word.
+    const std::vector<YAML::Node> docs = YAML::LoadAll(text);
+    if (docs.size() > 1) {
+      const YAML::Mark m = secondDocumentStart(text, docs[1]);
+      throw SceneError(file, m.line + 1, m.column + 1,
+                       "a second YAML document starts here; a scene file holds one (remove this '---' and what "
+                       "follows, or merge it into the first)");
+    }
+    // (An empty text has no document: a null node of its own, which a --set
+    // path can make a mapping of.)
+    doc = docs.empty() ? YAML::Node(YAML::NodeType::Null) : docs[0];
   } catch (const YAML::ParserException& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg);
   }
   std::vector<Override> applied;
   for (const std::string& kv : overrides) applied.push_back(applyOverride(doc, kv));
   try {
-    return Loader(file, applied, confine).load(doc);
+    Loader loader(file, applied, confine);
+    Scene scene = loader.load(doc);
+    for (const std::string& w : loader.warnings()) std::cerr << w << "\n";
+    return scene;
   } catch (const YAML::Exception& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, e.msg);
   }

@@ -136,6 +136,18 @@ TEST(PlyReader, RefusesMalformedFilesWithLineAndColumn) {
             "vertex_indices'");
   EXPECT_EQ(errorOf("plyx\n"), "mesh file 'm.ply' line 1 column 1: does not start with ply");
 
+  // Issue 48: an element other than vertex and face that the bytes cannot
+  // hold is named, not reported as the vertex and face counts.
+  const std::string edges = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                            "property float z\nelement edge 2000000000\nproperty int a\nelement face 1\n"
+                            "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_EQ(errorOf(edges), "mesh file 'm.ply' line 12 column 1: its element 'edge' claims 2000000000 items, more than "
+                            "its " + std::to_string(edges.size()) + " bytes can hold after the elements before it");
+  const std::string first = "ply\nformat ascii 1.0\nelement material 4000000000\nelement vertex 3\nproperty float x\n"
+                            "property float y\nproperty float z\nend_header\n0 0 0\n";
+  EXPECT_EQ(errorOf(first), "mesh file 'm.ply' line 9 column 1: its element 'material' claims 4000000000 items, more "
+                            "than its " + std::to_string(first.size()) + " bytes can hold");
+
   // Binary: a uint count of 2^32 - 1 corners.
   std::string b = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                   "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n";

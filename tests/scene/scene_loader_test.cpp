@@ -123,6 +123,134 @@ TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
   EXPECT_NO_THROW(loadSceneText("render: {soft_shadow_method: darkness_levels, soft_shadow_samples: 64, antialias_samples: 4}\n", "s.yaml"));
 }
 
+// Issue 48: a quoted scalar is a string wherever it stands. yaml-cpp hands
+// '45' over with the text of 45, and the loader read it as the number.
+TEST(SceneLoader, QuotedNumbersAndBooleansAreRefused) {
+  EXPECT_EQ(errorOf("camera: {fov: '45'}\n"),
+            "s.yaml:1:15: camera.fov must be a number, not the quoted string '45' (write it without quotes)");
+  EXPECT_EQ(errorOf("render:\n  width: \"20\"\n"),
+            "s.yaml:2:10: render.width must be a number, not the quoted string '20' (write it without quotes)");
+  EXPECT_EQ(errorOf("ambient: [0, '1', 0]\n"),
+            "s.yaml:1:14: ambient[1] must be a number, not the quoted string '1' (write it without quotes)");
+  EXPECT_EQ(errorOf("lights: [{position: [0, 1, 0], radius: '0.5'}]\n"),
+            "s.yaml:1:40: light radius must be a number, not the quoted string '0.5' (write it without quotes)");
+  EXPECT_EQ(errorOf("objects: [{primitive: box, scale: '2'}]\n"),
+            "s.yaml:1:35: object 'object at line 1' scale must be a number, not the quoted string '2' (write it "
+            "without quotes)");
+  EXPECT_EQ(errorOf("render: {shadows: 'false'}\n"),
+            "s.yaml:1:19: render.shadows must be true or false, not the quoted string 'false' (write it without quotes)");
+  EXPECT_EQ(errorOf("render: {width: !!str 20}\n"),
+            "s.yaml:1:17: render.width must be a number, not a value tagged 'tag:yaml.org,2002:str'");
+  EXPECT_EQ(errorOf("expect: [{after: end, stencil: [0, 0], value: '3'}]\n"),
+            "s.yaml:1:47: expect stencil value must be a number, not the quoted string '3' (write it without quotes)");
+  // A --set value is YAML too: quoted there, it is a string.
+  try {
+    loadSceneText("", "s.yaml", {"camera.fov='45'"});
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "--set camera.fov='45':1:1: camera.fov must be a number, not the quoted string '45' (write it without quotes)");
+  }
+  // Plain and explicitly numeric scalars, and quoted text where text belongs, load.
+  const Scene s = loadSceneText(
+      "camera: {fov: !!float 40}\nrender: {width: 20, shadows: false, profile: 'mesa'}\n"
+      "expect: [{after: 'end', stencil: [0, 0], value: 'SHAD_ZERO + 1'}]\n",
+      "s.yaml");
+  EXPECT_EQ(s.camera.fovY, 40.0f);
+  EXPECT_EQ(s.render.width, 20);
+  EXPECT_EQ(s.render.profile, "mesa");
+  EXPECT_EQ(s.expectations[0].probe.expected[0], 193);
+}
+
+// Issue 48: the field of view the format promises, (0, 180), with the
+// smallest that renders correctly (kMinFieldOfView): 1e-50 was zero as a
+// float (no projection at all), 180 a projection of everything onto the
+// centre, 1e-8 black bands.
+TEST(SceneLoader, FieldOfViewIsHeldToWhatRenders) {
+  EXPECT_EQ(errorOf("camera: {fov: 180}\n"), "s.yaml:1:15: camera.fov must be below 180, not 180");
+  EXPECT_EQ(errorOf("camera: {fov: 179.999999999}\n"),
+            "s.yaml:1:15: camera.fov must be below 180, not 179.999999999 (180 as a float)");
+  EXPECT_EQ(errorOf("camera: {fov: 0}\n"),
+            "s.yaml:1:15: camera.fov must be at least 0.05 degrees (narrower, float rounding in clipping leaves bands of the window empty), not 0");
+  EXPECT_EQ(errorOf("camera: {fov: 1e-50}\n"),
+            "s.yaml:1:15: camera.fov must be at least 0.05 degrees (narrower, float rounding in clipping leaves bands of the window empty), not 1e-50");
+  EXPECT_EQ(errorOf("camera: {fov: 1e-8}\n"),
+            "s.yaml:1:15: camera.fov must be at least 0.05 degrees (narrower, float rounding in clipping leaves bands of the window empty), not 1e-8");
+  EXPECT_EQ(errorOf("camera: {fov: -5}\n"),
+            "s.yaml:1:15: camera.fov must be at least 0.05 degrees (narrower, float rounding in clipping leaves bands of the window empty), not -5");
+  EXPECT_EQ(errorOf("camera: {fov: 0.0499}\n"),
+            "s.yaml:1:15: camera.fov must be at least 0.05 degrees (narrower, float rounding in clipping leaves bands of "
+            "the window empty), not 0.0499");
+  EXPECT_EQ(loadSceneText("camera: {fov: 0.05}\n", "s.yaml").camera.fovY, 0.05f);
+  EXPECT_EQ(loadSceneText("camera: {fov: 179.9}\n", "s.yaml").camera.fovY, 179.9f);
+}
+
+// Issue 48: YAML::Load read the first document and dropped the rest.
+TEST(SceneLoader, ASecondDocumentIsRefusedWhereItStarts) {
+  EXPECT_EQ(errorOf("render: {width: 32}\n---\nrender: {width: 8}\n"),
+            "s.yaml:2:1: a second YAML document starts here; a scene file holds one (remove this '---' and what "
+            "follows, or merge it into the first)");
+  EXPECT_EQ(errorOf("---\nrender: {width: 32}\n--- # more\n"),
+            "s.yaml:3:1: a second YAML document starts here; a scene file holds one (remove this '---' and what "
+            "follows, or merge it into the first)");
+  EXPECT_EQ(errorOf("render: {width: 32}\n...\nrender: {width: 8}\n"),
+            "s.yaml:3:1: a second YAML document starts here; a scene file holds one (remove this '---' and what "
+            "follows, or merge it into the first)");
+  // A syntax error in the second document is found too (it was never read).
+  EXPECT_EQ(errorOf("render: {width: 32}\n---\n[1, 2\n"), "s.yaml:4:1: YAML syntax: end of sequence flow not found");
+  // One document, with its start and end marked, loads; so does an empty file.
+  EXPECT_EQ(loadSceneText("---\nrender: {width: 32}\n...\n", "s.yaml").render.width, 32);
+  EXPECT_EQ(loadSceneText("# nothing\n", "s.yaml").render.width, 640);
+}
+
+// A UTF-8 byte-order mark before the first key: yaml-cpp skips it, and the
+// columns of line 1 count from after it.
+TEST(SceneLoader, ALeadingByteOrderMarkIsSkipped) {
+  EXPECT_EQ(loadSceneText("\xEF\xBB\xBFrender: {width: 32}\n", "s.yaml").render.width, 32);
+  EXPECT_EQ(errorOf("\xEF\xBB\xBFrender: {width: x}\n"), "s.yaml:1:17: render.width must be a number, not 'x'");
+}
+
+// Issue 48: a --set path enters a list by index (objects.0.scale), and an
+// error in what a --set gave or made names that --set, never the file.
+TEST(SceneLoader, SetEntersListsAndItsErrorsNameIt) {
+  const std::string two = "objects:\n  - {primitive: box}\n  - {primitive: sphere, subdivisions: 4}\n";
+  const Scene s = loadSceneText(two, "s.yaml", {"objects.0.scale=2", "objects.1.translate=[0, 0, 5]"});
+  ASSERT_EQ(s.objects.size(), 2u);
+  float maxX = -1e9f, minZ = 1e9f;
+  for (const Vec3& p : s.objects[0].mesh.positions) maxX = std::max(maxX, p.x);
+  for (const Vec3& p : s.objects[1].mesh.positions) minZ = std::min(minZ, p.z);
+  EXPECT_EQ(maxX, 1.0f);  // a unit box (half-side 0.5) scaled by 2
+  EXPECT_EQ(minZ, 4.0f);  // a sphere of radius 1 moved to z = 5
+  const auto setError = [&](const std::string& set) {
+    try {
+      loadSceneText(two, "s.yaml", {set});
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(setError("objects.0.scale=0"), "--set objects.0.scale=0:1:1: object 'object at line 2' scale must not be zero");
+  EXPECT_EQ(setError("objects.2.scale=2"),
+            "--set objects.2.scale=2:1:9: objects is a list of 2 entries: give an index from 0 to 1, not '2'");
+  EXPECT_EQ(setError("objects.first.scale=2"),
+            "--set objects.first.scale=2:1:9: objects is a list of 2 entries: give an index from 0 to 1, not 'first'");
+  // scale is not in the file: the path makes a mapping, whose error is the --set's.
+  EXPECT_EQ(setError("objects.0.scale.x=2"),
+            "--set objects.0.scale.x=2:1:1: object 'object at line 2' scale must be a list of 3 numbers, like [0, 1, 0]");
+  EXPECT_EQ(setError("objects.0.primitive.x=2"),
+            "--set objects.0.primitive.x=2:1:21: objects.0.primitive is a value ('box'), not a mapping with a key 'x'");
+  EXPECT_EQ(setError("render..width=2"),
+            "--set render..width=2:1:8: 'render..width' has an empty key; keys are joined by single dots");
+  // Inside a value a --set gave: its line and column are the value's, not the file's.
+  EXPECT_EQ(setError("camera={fov: 200}"), "--set camera={fov: 200}:1:1: camera.fov must be below 180, not 200");
+  EXPECT_EQ(setError("objects.1={primitive: cube}"),
+            "--set objects.1={primitive: cube}:1:1: object 'object 1 of the list' primitive must be box, sphere, "
+            "cylinder, quad or plane, not 'cube'");
+  // A mapping a --set made on its way.
+  EXPECT_EQ(setError("materials.m.kind=mirror"), "no error");
+  EXPECT_EQ(setError("camera.fov=30"), "no error");
+}
+
 class MeshFiles : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -176,6 +304,34 @@ TEST_F(MeshFiles, SpecularObjectsNeedPlanarFacesWithArea) {
             std::string::npos);
   // The same bent face is fine on a diffuse object.
   EXPECT_EQ(errorOfFile("objects:\n  - {name: bent, mesh: bent.obj}\n"), "no error");
+}
+
+// Issue 48: OpenMesh wrote its own lines to standard error ("ImporterT:
+// Face has equal vertices", "PolyMeshT::add_face: complex edge") and OBJ
+// and STL faces it dropped went unmentioned; now MPR says it, once a mesh,
+// at the object's mesh key.
+TEST_F(MeshFiles, DroppedAndNonManifoldFacesAreMPRsWarnings) {
+  write("d.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 0 1\n2 0 1\n3 0 2 3\n");
+  write("d.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 1 1 2\nf 2 4 3\nf 2 4 3\n");
+  write("clean.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string path =
+      write("scene.yaml", "objects:\n  - {name: a, mesh: d.off}\n  - {name: b, mesh: d.obj}\n  - {name: c, mesh: clean.obj}\n");
+  ::testing::internal::CaptureStderr();
+  const Scene s = loadSceneFile(path);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(s.objects[0].mesh.faces.size(), 2u);
+  EXPECT_EQ(s.objects[1].mesh.faces.size(), 3u);
+  const std::string d = dir_.string();
+  EXPECT_EQ(err, path + ":2:21: warning: object 'a': mesh file '" + d + "/d.off': 2 of its 4 faces dropped as degenerate "
+                 "(fewer than three corners, or a corner repeated)\n" +
+                 path + ":3:21: warning: object 'b': mesh file '" + d + "/d.obj': 1 of its 4 faces dropped as degenerate "
+                 "(fewer than three corners, or a corner repeated)\n" +
+                 path + ":3:21: warning: object 'b': mesh file '" + d + "/d.obj': 1 non-manifold face kept with vertices "
+                 "of its own (not smoothed with its neighbours)\n");
+  // A scene that fails says only why.
+  ::testing::internal::CaptureStderr();
+  EXPECT_NE(errorOfFile("objects:\n  - {name: a, mesh: d.off}\n  - {primitive: torus}\n"), "no error");
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
 TEST(SceneLoader, DefaultSceneLoadsAndDescribeNamesEveryKey) {
