@@ -78,11 +78,19 @@ class WindowRenderer {
     gl_.pass(kind, label);
   }
 
+  // Every view, lit pass and shadow pass is reported as it starts, so that
+  // --max-passes can stop a render at any of them (cli/scene_limits).
+  void reportProgress() {
+    if (progress_)
+      progress_({counts_.views, counts_.views + counts_.lightPasses + counts_.shadowPasses,
+                 "view " + std::to_string(counts_.views)});
+  }
+
   // ---- drawwindow(Camera) -------------------------------------------------
   void draw_window(const ViewCamera& cam) {
     ++counts_.views;
     ++counts_.viewsAtLevel[static_cast<std::size_t>(cam.level)];
-    if (progress_) progress_({counts_.views, "view " + std::to_string(counts_.views)});
+    reportProgress();
     path_.push_back("draw_window level " + std::to_string(cam.level));
     const std::uint32_t zero = lv_.zero;
     const bool shadowsHere = plan_.shadows && cam.level <= plan_.shadowDepth;
@@ -138,7 +146,7 @@ class WindowRenderer {
       countVolumes(gl_, lightVolumes, cam, s_.camera, gl_scene_.aspect(), lv_, true, true);
       pass("shadow volume",
            "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT, ref_face)");
-      ++counts_.shadowPasses;
+      ++counts_.shadowPasses, reportProgress();
       std::vector<const VolumeGeometry*> vols;
       for (const VolumeGeometry& v : rl.shadows) vols.push_back(&v);
       counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, gl_scene_.aspect(), lv_, false);
@@ -164,7 +172,7 @@ class WindowRenderer {
   void draw_all_shadows(const ViewCamera& cam, int light) {
     path_.push_back("draw_all_shadows");
     pass("shadow volume", "shadow volumes | make_all_shadows(ALWAYS)");
-    ++counts_.shadowPasses;
+    ++counts_.shadowPasses, reportProgress();
     gl_scene_.setupView(cam);
     counts_.zfailVolumes += shadows_.drawVolumes(gl_, light, cam, s_.camera, lv_);
     // More nested volumes than SHAD_ZERO..max can count saturate at max (INCR
@@ -379,7 +387,7 @@ class WindowRenderer {
       gl_scene_.drawTriangles(o.mesh);
     }
     if (cam.fog) gl_.disable(GL_FOG);
-    if (light) ++counts_.lightPasses;
+    if (light) ++counts_.lightPasses, reportProgress();
   }
 
   // draw_face(ref_face): the face's visible pixels (depth test, no colour or
@@ -481,7 +489,7 @@ class WindowRenderer {
       pass("apply_stencil", "face lit by light " + l + ": its pixels to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)");
       apply_stencil(gl_, {PaperCompare::Equal, zero, PaperPass::Replace, lv_.shadZero}, lv_);
       pass("shadow volume", "shadows on the face, light " + l + " | the light's volumes but the face's own, on its pixels");
-      ++counts_.shadowPasses;
+      ++counts_.shadowPasses, reportProgress();
       gl_scene_.setupView(cam);
       counts_.zfailVolumes += shadows_.drawVolumes(gl_, light, cam, s_.camera, lv_, face.object);
       pass("light", "the face lit by light " + l + " outside the shadows | blend (DST_ALPHA, ONE)");
@@ -500,7 +508,7 @@ class WindowRenderer {
       gl_scene_.setLight(0, s_.lights[static_cast<std::size_t>(light)]);
       gl_scene_.setMaterial(m, false);
       gl_scene_.drawPolygon(face, true, fromBehind);
-      ++counts_.lightPasses;
+      ++counts_.lightPasses, reportProgress();
       pass("apply_stencil", "face back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)");
       apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, zero}, lv_);
     }

@@ -27,6 +27,7 @@ struct DrawWindowCounts {
 
 struct DrawWindowProgress {
   std::uint64_t views = 0;
+  std::uint64_t passes = 0;  // views, lit passes and shadow passes so far
   std::string label;
 };
 

@@ -35,9 +35,9 @@ RenderResult renderScene(const Scene& modelled, GLCommandStream& gl,
   RenderResult r;
   r.plan = planRender(scene, cull);
   const std::uint64_t predicted = r.plan.predictedViews() * static_cast<std::uint64_t>(r.plan.images);
-  std::uint64_t viewsBefore = 0;
+  std::uint64_t viewsBefore = 0, passesBefore = 0;
   const auto report = [&](const DrawWindowProgress& p) {
-    if (progress) progress({viewsBefore + p.views, predicted, p.label});
+    if (progress) progress({viewsBefore + p.views, predicted, passesBefore + p.passes, p.label});
   };
   const int n = r.plan.images;
   if (n <= 1) {
@@ -59,6 +59,7 @@ RenderResult renderScene(const Scene& modelled, GLCommandStream& gl,
     const Scene sampled = lightSampleScene(scene, i, n);
     addCounts(r.counts, drawScene(sampled, r.plan, gl, report, viewSample(scene, i, n), pivotBase ? &*pivotBase : nullptr));
     viewsBefore = r.counts.views;
+    passesBefore = r.counts.views + r.counts.lightPasses + r.counts.shadowPasses;
     gl.pass("accumulate", "accumulate | image " + std::to_string(i + 1) + " of " + std::to_string(n) +
                               ": glAccum(GL_ACCUM, 1/" + std::to_string(n) + ")");
     gl.accum(GL_ACCUM, 1.0f / static_cast<float>(n));

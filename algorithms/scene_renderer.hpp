@@ -14,6 +14,7 @@ namespace mpr {
 
 struct RenderProgress {
   std::uint64_t views = 0, predictedViews = 0;
+  std::uint64_t passes = 0;  // views, lit and shadow passes so far (what --max-passes bounds)
   std::string label;
 };
 

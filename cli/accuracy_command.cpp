@@ -105,6 +105,13 @@ class AccuracyRun {
     std::vector<std::string> seen;
     for (const SweepSetting& s : expandSweep(keys, o_.product)) {
       Scene scene = load(s.sets(), "--vary " + s.label());
+      // One reference image for every setting: a setting of another size
+      // is refused now, not after the sweep.
+      if (scene.render.width != base_.render.width || scene.render.height != base_.render.height)
+        throw UserError("mpr accuracy: --vary " + s.label() + ": renders " + std::to_string(scene.render.width) + "x" +
+                        std::to_string(scene.render.height) + ", but every setting is compared with one reference of " +
+                        std::to_string(base_.render.width) + "x" + std::to_string(base_.render.height) +
+                        " (give the size with --width/--height instead)");
       const std::string fp = sceneFingerprint(scene);
       if (std::find(seen.begin(), seen.end(), fp) != seen.end()) continue;
       seen.push_back(fp);
@@ -287,11 +294,14 @@ void addAccuracyCommand(CLI::App& app, int& exitCode) {
   c->add_option("--vary", o->vary, "KEY=V1,V2,... a scene key and its values (repeatable)");
   c->add_flag("--product", o->product, "render every combination of the --vary values");
   c->add_option("--reference", o->reference, "compare with this image (PNG/TIFF/EXR, e.g. from mpr reference)");
-  c->add_option("--spp", o->spp, "reference samples per pixel (default 16)");
-  c->add_option("--model", o->model, "reference shading model: pipeline (default) or physical");
-  c->add_option("--bounces", o->bounces, "reference specular bounces (default: until below 1/512)");
-  c->add_option("--threads", o->threads, "reference threads (default: all)");
-  c->add_option("--repeat", o->repeat, "pipeline runs per setting; the median is reported (default 3)");
+  c->add_option("--spp", o->spp, "reference samples per pixel (default 16)")->check(CLI::Range(1, 65536));
+  c->add_option("--model", o->model, "reference shading model: pipeline (default) or physical")
+      ->check(CLI::IsMember({"pipeline", "physical"}));
+  c->add_option("--bounces", o->bounces, "reference specular bounces (default: until below 1/512)")
+      ->check(CLI::Range(-1, 100));
+  c->add_option("--threads", o->threads, "reference threads (default: all)")->check(CLI::Range(0, 1024));
+  c->add_option("--repeat", o->repeat, "pipeline runs per setting; the median is reported (default 3)")
+      ->check(CLI::Range(1, 1000));
   c->add_option("--width", o->width, "image width (overrides render.width)")->check(CLI::Range(1, 16384));
   c->add_option("--height", o->height, "image height (overrides render.height)")->check(CLI::Range(1, 16384));
   c->add_option("--set", o->sets, "override a scene value for every setting: key.path=value (repeatable)");

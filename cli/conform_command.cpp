@@ -1,5 +1,8 @@
 #include "cli/conform_command.hpp"
 
+#include "cli/output_set.hpp"
+#include "cli/scene_limits.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -73,7 +76,7 @@ std::string values(const std::string& buffer, const std::array<int, 4>& v) {
 }
 
 // A difference image: MPR's colour dimmed to grey, mismatching pixels red.
-std::string differencePng(const BufferSet& m, const BufferAgreement& b, const BufferSet& g, const std::string& path) {
+Framebuffer differenceImage(const BufferSet& m, const BufferAgreement& b, const BufferSet& g) {
   Framebuffer img(m.width, m.height, mesaProfile());
   for (int y = 0; y < m.height; ++y)
     for (int x = 0; x < m.width; ++x) {
@@ -88,8 +91,7 @@ std::string differencePng(const BufferSet& m, const BufferAgreement& b, const Bu
       const auto grey = static_cast<std::uint8_t>((m.color[i * 4] + m.color[i * 4 + 1] + m.color[i * 4 + 2]) / 12 + 32);
       img.color(x, y) = differs ? Rgba8{255, 0, 0, 255} : Rgba8{grey, grey, grey, 255};
     }
-  writeColorImage(img, path);
-  return path;
+  return img;
 }
 
 // Compares one script; prints its report unless quiet. 0 conforms, 1 not, 2 no Mesa.
@@ -194,12 +196,17 @@ int conformScript(const Script& script, const ConformOptions& o, const std::stri
   json << "  ],\n  \"gl_errors_agree\": " << (ours.glErrors == mesa.glErrors ? "true" : "false")
        << ",\n  \"conforms\": " << (all ? "true" : "false") << "\n}\n";
   if (!reportDir.empty() && (!all || !reportFailuresOnly)) {
-    std::filesystem::create_directories(reportDir);
+    // One output writer, as every command's: files made from the folder's
+    // held descriptor, renamed into place together.
+    OutputSet outputs("conform");
+    const std::filesystem::path dir(reportDir);
+    outputs.createFolder(reportDir);
     for (const auto& [k, b] : differing)
-      differencePng(ours.snapshots[k], b, mesa.snapshots[k],
-                    (std::filesystem::path(reportDir) / (ours.snapshots[k].point + "-" + b.buffer + "-diff.png")).string());
-    writeFileAtomically((std::filesystem::path(reportDir) / "summary.json").string(), json.str());
-    if (!all) writeFileAtomically((std::filesystem::path(reportDir) / "script.gls").string(), script.text);
+      writeColorImage(differenceImage(ours.snapshots[k], b, mesa.snapshots[k]),
+                      outputs.open((dir / (ours.snapshots[k].point + "-" + b.buffer + "-diff.png")).string()));
+    outputs.write((dir / "summary.json").string(), json.str());
+    if (!all) outputs.write((dir / "script.gls").string(), script.text);
+    outputs.commit();
   }
   out << (all ? "conforms" : "does NOT conform") << "\n";
   ++totals.scripts;
@@ -242,14 +249,29 @@ int runConform(const ConformOptions& o) {
     for (const Script& s : scripts) std::cout << "# " << s.file << "\n" << s.text;
     return 0;
   }
+  // The report folders (one per script when there are several), checked
+  // before anything runs: none may replace a script or share a file.
+  const auto reportFolder = [&](std::size_t i) {
+    std::string dir = o.reportDir;
+    if (!dir.empty() && scripts.size() > 1)
+      dir = (std::filesystem::path(dir) / std::filesystem::path(scripts[i].file).stem()).string();
+    return dir;
+  };
+  if (!o.reportDir.empty()) {
+    OutputSet outputs("conform");
+    for (const std::string& path : o.scripts) outputs.addInput("the script", path);
+    for (std::size_t i = 0; i < scripts.size(); ++i)
+      outputs.addFolder("--report", reportFolder(i), {"summary.json", "script.gls"}, ".png");
+    if (const std::string problem = outputs.problem(); !problem.empty()) {
+      std::cerr << problem << "\n";
+      return 2;
+    }
+  }
   Totals totals;
   int worst = 0;
   for (std::size_t i = 0; i < scripts.size(); ++i) {
     if (scripts.size() > 1 && isatty(2)) std::cerr << "\r[" << i + 1 << "/" << scripts.size() << "] " << std::flush;
-    std::string dir = o.reportDir;
-    if (!dir.empty() && scripts.size() > 1)
-      dir = (std::filesystem::path(dir) / std::filesystem::path(scripts[i].file).stem()).string();
-    const int rc = conformScript(scripts[i], o, dir, scripts.size() > 1, totals);
+    const int rc = conformScript(scripts[i], o, reportFolder(i), scripts.size() > 1, totals);
     if (rc == 2) return 2;
     worst = std::max(worst, rc);
   }
@@ -282,19 +304,22 @@ void addConformCommand(CLI::App& app, int& exitCode) {
       "largest difference and the verdict against the bounds in the README. Exit status 0 when\n"
       "the script conforms, 1 when it does not, 2 for a bad script or no Mesa.");
   c->add_option("scripts", opts->scripts, "GL scripts to run");
-  c->add_option("--random", opts->random, "also run N random scripts (seeded, dyadic coordinates)");
-  c->add_option("--seed", opts->seed, "first seed of --random (default 1)");
+  c->add_option("--random", opts->random, "also run N random scripts (seeded, dyadic coordinates)")
+      ->check(CLI::Range(0, 100000000));
+  c->add_option("--seed", opts->seed, "first seed of --random (default 1)")->check(wholeNumberFrom(0));
   c->add_option("--family", opts->family,
                 "family of the --random scripts: default (dyadic, orthographic), perspective, matrices, "
                 "primitives, lighting, fog, clip_planes, accumulation, mixed, fragment_ops");
   c->add_option("--min-within", opts->minWithin,
-                 "exit 0 when at least this percentage of the scripts is within bounds (default 100)");
+                 "exit 0 when at least this percentage of the scripts is within bounds (default 100)")
+      ->check(CLI::Range(0.0, 100.0));
   c->add_flag("--print", opts->print, "print the --random scripts instead of running them");
   c->add_flag("-q,--quiet", opts->quiet, "print only scripts out of bounds and the table");
   c->add_flag("--strict", opts->strict, "known Mesa departures from GL 1.1 fail a script too");
   c->add_flag("--exact", opts->exact,
               "hold every buffer to identical bytes on every pixel instead of the README's bounds");
-  c->add_option("--driver", opts->driver, "Mesa driver: llvmpipe (default) or softpipe");
+  c->add_option("--driver", opts->driver, "Mesa driver: llvmpipe (default) or softpipe")
+      ->check(CLI::IsMember({"llvmpipe", "softpipe"}));
   addThreadsOption(*c, opts->threads);
   c->add_option("--report", opts->reportDir,
                  "write summary.json and difference images here (one folder per script when several)");

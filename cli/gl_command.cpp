@@ -73,7 +73,12 @@ int runGl(const GlOptions& o) {
     return 2;
   }
   OutputSet outputs("gl");
-  if (o.dumpGiven) outputs.addFolder("--dump", o.dumpDir);
+  outputs.addInput("the script", o.script);
+  if (o.dumpGiven) {
+    std::vector<std::string> names = npyDumpFileNames();
+    names.push_back("color.png");
+    outputs.addFolder("--dump", o.dumpDir, std::move(names), ".npy");  // and NAME-<buffer>.npy per snapshot
+  }
   if (const std::string problem = outputs.problem(); !problem.empty()) {
     if (reportScriptError()) return 2;
     std::cerr << problem << "\n";

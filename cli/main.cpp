@@ -16,6 +16,7 @@
 #include "cli/step_command.hpp"
 #include "cli/test_command.hpp"
 #include "util/heap_reuse.hpp"
+#include "util/signal_cleanup.hpp"
 
 int main(int argc, char** argv) {
   mpr::keepFreedHeapMemory();  // freed blocks reused, not faulted in again (util/heap_reuse.hpp)
@@ -35,6 +36,10 @@ int main(int argc, char** argv) {
   // Past `ulimit -f` a write fails with EFBIG (and the output is left as it
   // was) instead of the process being killed half-way through a file.
   std::signal(SIGXFSZ, SIG_IGN);
+  // An interrupt (Ctrl-C, SIGTERM) while files are written removes the
+  // temporaries and half-made page folders before the process ends by the
+  // signal (util/signal_cleanup): earlier outputs stay as they were.
+  mpr::installSignalCleanup();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,12 @@
 #include "cli/page_folder.hpp"
 
+#include <fcntl.h>
+#include <stdio.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <algorithm>
 #include <filesystem>
@@ -9,7 +15,9 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "cli/output_set.hpp"
 #include "util/atomic_file.hpp"
+#include "util/signal_cleanup.hpp"
 
 namespace mpr::cli {
 namespace fs = std::filesystem;
@@ -55,19 +63,20 @@ bool holdsPage(const fs::path& dir, std::string_view generator) {
   return !ec;
 }
 
-// A name beside `dir` that nothing uses yet (random, so not guessable).
-fs::path sibling(const fs::path& dir, const std::string& what) {
+// ".DIR.WHAT-RANDOM": a hidden name beside the folder, not guessable.
+std::string siblingName(const fs::path& dir, const std::string& what) {
   std::random_device rd;
-  for (;;) {
-    std::string name = ".";
-    name += dir.filename().string();
-    name += '.';
-    name += what;
-    name += '-';
-    name += std::to_string(rd());
-    const fs::path p = dir.parent_path() / name;
-    if (!fs::exists(fs::symlink_status(p))) return p;
-  }
+  std::string name = ".";
+  name += dir.filename().string();
+  name += '.';
+  name += what;
+  name += '-';
+  name += std::to_string(rd());
+  return name;
+}
+
+std::runtime_error pageError(const fs::path& target, const std::string& step, int err) {
+  return std::runtime_error("cannot " + step + " " + target.string() + ": " + std::strerror(err));
 }
 
 }  // namespace
@@ -90,39 +99,71 @@ std::string pageFolderProblem(const std::string& dir, std::string_view generator
 
 void writePageFolder(const std::string& dir, std::string_view generator, const std::vector<PageFile>& files) {
   const fs::path target = fs::absolute(fs::path(dir).lexically_normal());
-  fs::create_directories(target.parent_path());
-  const fs::path tmp = sibling(target, "new");
+  // Every step is relative to the parent folder, opened once (and created,
+  // like any output's, without following a link: cli/output_set), and the
+  // page is filled through the new folder's own descriptor: another process
+  // that can write beside the page cannot redirect a file by swapping a name.
+  OutputSet parent("page");
+  const int parentFd = parent.createFolder(target.parent_path().string());
+  std::string tmpName;
+  for (int attempt = 0;; ++attempt) {
+    tmpName = siblingName(target, "new");
+    if (::mkdirat(parentFd, tmpName.c_str(), 0777) == 0) break;
+    if (errno != EEXIST || attempt == 100) throw pageError(target, "write", errno);
+  }
+  // An interrupt removes the half-made page (util/signal_cleanup).
+  SignalCleanup cleanup(parentFd, tmpName, SignalCleanup::Kind::Folder);
+  const int tmpFd = ::openat(parentFd, tmpName.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  const std::string name = target.filename().string();
   try {
-    if (!fs::create_directory(tmp)) throw std::runtime_error("cannot create " + tmp.string() + ": it exists");
-    for (const auto& [name, bytes] : files) writeFileAtomically((tmp / name).string(), bytes);
-    writeFileAtomically((tmp / kMarker).string(), markerText(generator, files));
-    if (fs::exists(fs::symlink_status(target))) {
+    if (tmpFd < 0) throw pageError(target, "write", errno);
+    for (const auto& [file, bytes] : files) {
+      AtomicFile f(tmpFd, file, (target / file).string());
+      f.write(bytes);
+      f.commit();
+    }
+    AtomicFile marker(tmpFd, kMarker, (target / kMarker).string());
+    marker.write(markerText(generator, files));
+    marker.commit();
+    // The hidden name must still hold the folder this process filled.
+    struct stat mine {}, named {};
+    if (::fstat(tmpFd, &mine) != 0 || ::fstatat(parentFd, tmpName.c_str(), &named, AT_SYMLINK_NOFOLLOW) != 0 ||
+        mine.st_dev != named.st_dev || mine.st_ino != named.st_ino)
+      throw std::runtime_error("cannot write " + target.string() + ": its new folder was replaced while it was written");
+    struct stat st {};
+    if (::fstatat(parentFd, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0) {
       // Checked again: the folder may have changed while the page was made.
       std::error_code ec;
-      if (!fs::is_directory(fs::symlink_status(target)) || (!fs::is_empty(target, ec) && !holdsPage(target, generator)))
+      if (!S_ISDIR(st.st_mode) || (!fs::is_empty(target, ec) && !holdsPage(target, generator)))
         throw std::runtime_error(quotedPath(target.string(), "changed while the page was made and is no longer an earlier page"));
-      const fs::path old = sibling(target, "old");
-      fs::rename(target, old);
-      try {
-        fs::rename(tmp, target);
-      } catch (...) {
-        std::error_code ec;
-        fs::rename(old, target, ec);  // put the earlier page back
-        throw;
+      // The new page and the earlier one trade places in one step; the
+      // earlier one, now under the hidden name, is removed.
+      if (::renameat2(parentFd, tmpName.c_str(), parentFd, name.c_str(), RENAME_EXCHANGE) != 0) {
+        if (errno != EINVAL) throw pageError(target, "replace", errno);
+        // A file system without the exchange: the earlier page aside, the
+        // new one in, the earlier one under the hidden name again.
+        const std::string old = siblingName(target, "old");
+        if (::renameat(parentFd, name.c_str(), parentFd, old.c_str()) != 0) throw pageError(target, "replace", errno);
+        if (::renameat(parentFd, tmpName.c_str(), parentFd, name.c_str()) != 0) {
+          const int e = errno;
+          ::renameat(parentFd, old.c_str(), parentFd, name.c_str());  // put the earlier page back
+          throw pageError(target, "replace", e);
+        }
+        ::renameat(parentFd, old.c_str(), parentFd, tmpName.c_str());
       }
-      fs::remove_all(old);
-    } else {
-      fs::rename(tmp, target);
+    } else if (::renameat2(parentFd, tmpName.c_str(), parentFd, name.c_str(), RENAME_NOREPLACE) != 0) {
+      throw pageError(target, "write", errno);
     }
-  } catch (const fs::filesystem_error& e) {
-    std::error_code ec;
-    fs::remove_all(tmp, ec);
-    throw std::runtime_error(e.what());
   } catch (...) {
-    std::error_code ec;
-    fs::remove_all(tmp, ec);
+    if (tmpFd >= 0) ::close(tmpFd);
+    removeFlatFolder(parentFd, tmpName.c_str());
+    cleanup.release();
     throw;
   }
+  ::close(tmpFd);
+  removeFlatFolder(parentFd, tmpName.c_str());  // the earlier page, if any
+  cleanup.release();
+  parent.commit();  // the folders made above the page stay
 }
 
 }  // namespace mpr::cli

@@ -43,6 +43,7 @@ int runReference(const ReferenceCommandOptions& o) {
     return 2;
   }
   OutputSet outputs("reference");
+  outputs.addSceneInputs(scene);
   outputs.addFile("-o", o.output);
   if (const std::string problem = outputs.problem(); !problem.empty()) {
     std::cerr << problem << "\n";

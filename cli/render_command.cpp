@@ -101,8 +101,9 @@ int runRender(const RenderOptions& o) {
   }
   // Every output is checked before the render and written after it, together.
   OutputSet outputs("render");
+  outputs.addSceneInputs(scene);
   outputs.addFile("-o", o.output);
-  if (o.dumpGiven) outputs.addFolder("--dump", o.dumpDir);
+  if (o.dumpGiven) outputs.addFolder("--dump", o.dumpDir, npyDumpFileNames());
   if (o.traceGiven) outputs.addFile("--trace", o.traceFile);
   if (o.statsGiven) outputs.addFile("--stats", o.statsFile);
   if (const std::string problem = outputs.problem(); !problem.empty()) {

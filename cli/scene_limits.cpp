@@ -1,11 +1,29 @@
 #include "cli/scene_limits.hpp"
 
+#include <charconv>
 #include <limits>
+#include <system_error>
 
 #include "algorithms/light_path.hpp"
 #include "util/saturating.hpp"
 
 namespace mpr::cli {
+
+CLI::Validator wholeNumberFrom(std::uint64_t least) {
+  // Checked on the text: CLI11 reads "-1" into an unsigned option as its
+  // wrapped value and a number past 2^64 - 1 as the largest, both accepted.
+  return CLI::Validator(
+      [least](std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        const char* end = text.data() + text.size();
+        const auto [p, ec] = std::from_chars(text.data(), end, v);
+        if (text.empty() || ec != std::errc() || p != end || v < least)
+          return "must be a whole number from " + std::to_string(least) + " to " + std::to_string(std::numeric_limits<std::uint64_t>::max()) +
+                 ", not '" + text + "'";
+        return "";
+      },
+      std::to_string(least) + "..2^64-1");
+}
 
 void addConfineOption(CLI::App& command, SceneLimits& limits) {
   command.add_flag("--confine", limits.confine,
@@ -18,7 +36,7 @@ void addSceneLimitOptions(CLI::App& command, SceneLimits& limits) {
   command
       .add_option("--max-passes", limits.maxPasses,
                   "refuse a render of more passes (views, lit and shadow passes; default 1000000)")
-      ->check(CLI::Range(std::uint64_t{1}, std::numeric_limits<std::uint64_t>::max()));
+      ->check(wholeNumberFrom(1));
 }
 
 std::string planLimitProblem(const Scene& scene, const RenderPlan& plan, bool cull, const SceneLimits& limits) {
@@ -35,15 +53,15 @@ std::string planLimitProblem(const Scene& scene, const RenderPlan& plan, bool cu
 std::function<void(const RenderProgress&)> passLimitWatch(const SceneLimits& limits,
                                                           std::function<void(const RenderProgress&)> then) {
   return [max = limits.maxPasses, then = std::move(then)](const RenderProgress& p) {
-    if (p.views > max) throw PassLimitReached{p.views};
+    if (p.passes > max) throw PassLimitReached{p.passes};
     if (then) then(p);
   };
 }
 
 std::string passLimitMessage(const Scene& scene, const PassLimitReached& stop, const SceneLimits& limits) {
-  return scene.file + ": the render passed --max-passes " + std::to_string(limits.maxPasses) + " at view " +
-         std::to_string(stop.views) + " (the plan allows up to " + countText(planRender(scene, true).predictedPasses()) +
-         " passes)";
+  return scene.file + ": the render passed --max-passes " + std::to_string(limits.maxPasses) + " at pass " +
+         std::to_string(stop.passes) + " (views, lit and shadow passes; the plan allows up to " +
+         countText(planRender(scene, true).predictedPasses()) + ")";
 }
 
 }  // namespace mpr::cli

@@ -162,7 +162,8 @@ void addStepCommand(CLI::App& app, int& exitCode) {
                    ->excludes(pixel);
   auto html = c->add_option("--html", o->html, "DIR: write the stepper page there")->excludes(pixel)->excludes(state);
   c->add_option("--history-mb", o->historyMb, "with --html: the most megabytes of compressed pixel history (default 64)")
-      ->needs(html);
+      ->needs(html)
+      ->check(CLI::Range(0, 1 << 20));
   addSceneLimitOptions(*c, o->limits);
   addThreadsOption(*c, o->threads);
   c->callback([o, html, pixel, &exitCode] {

@@ -162,8 +162,9 @@ int writeStepPage(const Script& script, const HardwareProfile& profile, const St
   try {
     writePageFolder(o.dir, kStepPageGenerator, files);
   } catch (const std::exception& e) {
+    // A failure while writing (a full disk) is status 1, as for every output.
     std::cerr << "mpr step: --html: " << e.what() << "\n";
-    return 2;
+    return 1;
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::cout << o.dir << "/index.html: " << passes.size() << " passes, " << megabytes(total) << " (buffers "

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/junit_xml.hpp"
+#include "cli/output_set.hpp"
 #include "cli/scene_limits.hpp"
 #include "cli/scene_test.hpp"
 #include "framebuffer/image_writer.hpp"
@@ -121,6 +122,19 @@ int runTest(const TestOptions& o) {
     }
   }
   if (bad) return 2;
+  // The outputs, checked before any test runs: a report or JUnit file must
+  // not replace a script or scene it tests, nor each other.
+  OutputSet outputs("test");
+  for (const Item& it : items) {
+    if (it.scene) outputs.addSceneInputs(it.sceneData);
+    else outputs.addInput("the script", it.script.file);
+  }
+  if (!o.junit.empty()) outputs.addFile("--junit", o.junit);
+  if (!o.report.empty()) outputs.addFolder("--report", o.report, {}, ".png");  // <script>.line<N>.png
+  if (const std::string problem = outputs.problem(); !problem.empty()) {
+    std::cerr << problem << "\n";
+    return 2;
+  }
   std::vector<HardwareProfile> profiles;
   for (const Item& it : items) {
     const std::string name = it.scene ? it.sceneData.render.profile
@@ -204,12 +218,13 @@ int runTest(const TestOptions& o) {
   std::cout << passed << " passed, " << failed << " failed\n";
 
   try {
-    if (!o.junit.empty()) writeFileAtomically(o.junit, junitXml("mpr test", cases));
+    if (!o.junit.empty()) outputs.write(o.junit, junitXml("mpr test", cases));
     if (!o.report.empty()) {
-      fs::create_directories(o.report);
+      outputs.createFolder(o.report);
       for (const Difference& d : differences)
-        writeRgbImage((fs::path(o.report) / d.name).string(), d.width, d.height, d.rgb.data());
+        writeRgbImage(outputs.open((fs::path(o.report) / d.name).string()), d.width, d.height, d.rgb.data());
     }
+    outputs.commit();
   } catch (const std::exception& e) {
     std::cerr << "mpr test: " << e.what() << "\n";
     return 2;

@@ -9,11 +9,11 @@ namespace {
 
 template <typename T>
 void writeRgb(AtomicFile& file, int w, int h, const T* rgb) {
-  // The format comes from the target's name; the bytes go to the temporary.
+  // The format comes from the target's name; the bytes go to its file.
   // GL rows are bottom-up; images top-down: start at the top row, step down.
   const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(w) * 3;
   const T* top = rgb + static_cast<std::size_t>(h - 1) * w * 3;
-  writeImageFile(file.target(), file.temporaryPath(), w, h, 3, top, -row);
+  writeImageFile(file, w, h, 3, top, -row);
   file.finish();
 }
 

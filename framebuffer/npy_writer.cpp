@@ -31,13 +31,19 @@ std::string npyBytes(const std::string& descr, const std::vector<std::size_t>& s
   return out;
 }
 
+const std::vector<std::string>& framebufferDumpNames() {
+  static const std::vector<std::string> names{"color", "depth", "stencil", "accum"};
+  return names;
+}
+
 std::vector<NamedBytes> framebufferNpyDumps(const Framebuffer& fb) {
   const std::size_t h = static_cast<std::size_t>(fb.height()), w = static_cast<std::size_t>(fb.width());
+  const std::vector<std::string>& name = framebufferDumpNames();
   std::vector<NamedBytes> out;
-  out.push_back({"color", npyBytes("|u1", {h, w, 4}, fb.colorData().data(), h * w * 4)});
-  out.push_back({"depth", npyBytes("<u4", {h, w}, fb.depthData().data(), h * w * 4)});
-  out.push_back({"stencil", npyBytes("|u1", {h, w}, fb.stencilData().data(), h * w)});
-  out.push_back({"accum", npyBytes("<i2", {h, w, 4}, fb.accumData().data(), h * w * 8)});
+  out.push_back({name[0], npyBytes("|u1", {h, w, 4}, fb.colorData().data(), h * w * 4)});
+  out.push_back({name[1], npyBytes("<u4", {h, w}, fb.depthData().data(), h * w * 4)});
+  out.push_back({name[2], npyBytes("|u1", {h, w}, fb.stencilData().data(), h * w)});
+  out.push_back({name[3], npyBytes("<i2", {h, w, 4}, fb.accumData().data(), h * w * 8)});
   return out;
 }
 

@@ -21,5 +21,8 @@ struct NamedBytes {
   std::string bytes;
 };
 std::vector<NamedBytes> framebufferNpyDumps(const Framebuffer& fb);
+// Their names, in that order: what a dump folder will hold, known before
+// the render (cli/output_set checks them against inputs and other outputs).
+const std::vector<std::string>& framebufferDumpNames();
 
 }  // namespace mpr

@@ -510,6 +510,7 @@ class Loader {
       std::vector<std::string> said;
       try {
         o.mesh = loadMeshFile(path.string(), &said);
+        o.meshFile = path.string();
       } catch (const std::exception& e) {
         fail(n["mesh"], where + ": " + e.what());
       }

@@ -1,49 +1,71 @@
 #pragma once
 // Writing files so that a reader never sees half a file, a failed write
-// leaves the old file as it was, and nothing outside the output is touched.
+// leaves the old file as it was, and nothing outside the output is touched,
+// even when another process can write in the output's folder.
 //
-// A temporary is created in the target's own folder with a random name and
-// O_CREAT | O_EXCL | O_NOFOLLOW (never an existing file, never through a
-// symbolic link another user planted at a predictable name), written,
-// fsync'd, and renamed over the target (rename replaces a link at the target
-// itself, it does not follow it). A group of files is committed together:
-// every temporary is written before the first rename, so a full disk or a
-// bad path leaves none of them replaced.
+// The target's folder is opened once and held: every later step is relative
+// to that descriptor (openat, linkat, renameat), so a folder swapped for a
+// link mid-write moves nothing. The bytes go to a file with no name at all
+// (O_TMPFILE) through the descriptor that created it; writers that open by
+// name (OpenImageIO) are handed /proc/self/fd/N, which reaches that same
+// file whatever a name in the folder has become. Only when the file is
+// complete and fsync'd is it linked under a random hidden name, and then
+// renamed over the target (a link at the target itself is replaced, not
+// followed). Where a file system has no O_TMPFILE the temporary is created
+// under its random name with O_CREAT | O_EXCL | O_NOFOLLOW instead. A group
+// of files is committed together: every temporary is finished before the
+// first rename, so a full disk or a bad path leaves none of them replaced.
+// A named temporary is removed if SIGINT or SIGTERM ends the process
+// (util/signal_cleanup).
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "util/signal_cleanup.hpp"
+
 namespace mpr {
 
 class AtomicFile {
  public:
-  // Creates the temporary beside `target` (keeping its extension last, so an
-  // image library picks the format from the name). Throws std::runtime_error
-  // naming `target`.
+  // Opens `target`'s folder and creates the temporary. Throws
+  // std::runtime_error naming `target`.
   explicit AtomicFile(std::string target);
+  // The same for the file `name` in the folder open as `folderFd` (held by
+  // the caller for the object's life); `shown` is the path messages name.
+  AtomicFile(int folderFd, const std::string& name, std::string shown);
   AtomicFile(AtomicFile&& other) noexcept;
   AtomicFile& operator=(AtomicFile&&) = delete;
   AtomicFile(const AtomicFile&) = delete;
   ~AtomicFile();  // removes the temporary unless committed
 
-  const std::string& target() const { return target_; }
-  // The temporary this object created: hand it to a writer that opens by
-  // name (OpenImageIO); it is a regular file only this process created.
-  const std::string& temporaryPath() const { return tmp_; }
+  const std::string& target() const { return shown_; }
+  // A path that opens this object's own file, for a writer that opens by
+  // name: /proc/self/fd/N (the temporary's name where /proc is missing).
+  std::string descriptorPath() const;
+  // The temporary's name in its folder: empty while it has none (O_TMPFILE,
+  // before finish()).
+  const std::string& temporaryName() const { return tmpName_; }
 
   // Appends bytes; throws on a short write (a full disk, `ulimit -f`).
   void write(std::string_view bytes);
-  // Flushes the temporary to disk and closes it; throws on failure.
+  // Flushes the file to disk and gives it its temporary name; throws on
+  // failure.
   void finish();
-  // Renames the finished temporary over the target; throws on failure.
+  // Renames the finished temporary over the target; throws on failure, or
+  // when the temporary's name no longer holds this object's file.
   void commit();
 
  private:
-  std::string target_, tmp_;
+  void create();
+  std::string shown_, name_, tmpName_;
+  int folderFd_ = -1;
+  bool ownsFolder_ = false;
   int fd_ = -1;
-  bool committed_ = false;
+  bool unnamed_ = false;  // O_TMPFILE: no name until finish()
+  bool finished_ = false, committed_ = false;
+  SignalCleanup cleanup_;
 };
 
 // Writes one file atomically.
@@ -69,5 +91,11 @@ std::string outputFileProblem(const std::string& path);
 // normalising, or the same name in one folder reached both ways (links to
 // folders resolved; a link at the name itself is not, it is replaced).
 bool sameOutputFile(const std::string& a, const std::string& b);
+
+// True when writing the output `output` would replace the existing file
+// `input`: the output's name (itself, not followed: rename replaces it) is
+// the input's name or the file it reaches (by device and inode, so hard
+// links and every spelling count). False when either does not exist.
+bool outputReplacesInput(const std::string& output, const std::string& input);
 
 }  // namespace mpr

@@ -2,8 +2,6 @@
 
 #include <dlfcn.h>
 
-#include <cerrno>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -80,30 +78,22 @@ void check(const std::string& error, const std::string& what) {
   if (!error.empty()) throw std::runtime_error(what + ": " + error);
 }
 
-void writeBytes(const std::string& formatPath, const std::string& filePath, const std::string& bytes) {
-  std::FILE* f = std::fopen(filePath.c_str(), "wb");
-  if (!f) throw std::runtime_error("cannot write " + formatPath + ": " + std::strerror(errno));
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size() && std::fflush(f) == 0;
-  const int writeErrno = errno;
-  if (std::fclose(f) != 0 || !written)
-    throw std::runtime_error("cannot write " + formatPath + ": " + std::strerror(written ? errno : writeErrno));
-}
-
 }  // namespace
 
-void writeImageFile(const std::string& formatPath, const std::string& filePath, int width, int height, int channels,
-                    const std::uint8_t* top, std::ptrdiff_t rowStride) {
+void writeImageFile(AtomicFile& file, int width, int height, int channels, const std::uint8_t* top,
+                    std::ptrdiff_t rowStride) {
   // An RGB PNG, the image every render writes, without the module.
-  if (channels == 3 && namesPngFile(formatPath))
-    return writeBytes(formatPath, filePath, encodeRgbPng(width, height, top, rowStride));
-  check(module().write(formatPath, filePath, width, height, channels, false, top, rowStride), "cannot write " + formatPath);
+  if (channels == 3 && namesPngFile(file.target())) return file.write(encodeRgbPng(width, height, top, rowStride));
+  // The module opens by name: the descriptor's own path, never the
+  // temporary's name, which another process could have replaced.
+  check(module().write(file.target(), file.descriptorPath(), width, height, channels, false, top, rowStride),
+        "cannot write " + file.target());
 }
 
-void writeImageFile(const std::string& formatPath, const std::string& filePath, int width, int height, int channels,
-                    const float* top, std::ptrdiff_t rowStride) {
-  check(module().write(formatPath, filePath, width, height, channels, true, top,
+void writeImageFile(AtomicFile& file, int width, int height, int channels, const float* top, std::ptrdiff_t rowStride) {
+  check(module().write(file.target(), file.descriptorPath(), width, height, channels, true, top,
                        rowStride * static_cast<std::ptrdiff_t>(sizeof(float))),
-        "cannot write " + formatPath);
+        "cannot write " + file.target());
 }
 
 std::string encodePngBytes(int width, int height, int channels, const std::uint8_t* top, std::ptrdiff_t rowStride) {

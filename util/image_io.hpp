@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "util/atomic_file.hpp"
+
 namespace mpr {
 
 // Pixels top row first, `channels` values a pixel: bytes for 8-bit files,
@@ -31,12 +33,11 @@ struct DecodedImage {
 // without loading the module.
 // Writes width x height pixels of `channels` values, the first row (the
 // image's top) at `top`, each next row `rowStride` values on (negative for
-// rows stored bottom-up), to `filePath` in the format `formatPath`'s
-// extension names (the two differ for a temporary file).
-void writeImageFile(const std::string& formatPath, const std::string& filePath, int width, int height, int channels,
-                    const std::uint8_t* top, std::ptrdiff_t rowStride);
-void writeImageFile(const std::string& formatPath, const std::string& filePath, int width, int height, int channels,
-                    const float* top, std::ptrdiff_t rowStride);
+// rows stored bottom-up), into `file`, in the format its target's extension
+// names. The caller finishes and commits the file.
+void writeImageFile(AtomicFile& file, int width, int height, int channels, const std::uint8_t* top,
+                    std::ptrdiff_t rowStride);
+void writeImageFile(AtomicFile& file, int width, int height, int channels, const float* top, std::ptrdiff_t rowStride);
 
 // The bytes of a PNG file of 8-bit pixels (rows as writeImageFile), always
 // encoded by the module (tests/util/png_writer_test.cpp holds util/png_writer

@@ -30,7 +30,7 @@ while IFS=$'\t' read -r name status fragment command; do
   echo keep > "$W/out/existing.png"
   echo victim > "$W/victim"
   before="$(state "$W")"
-  out="$(cd "$W" && MPR="$MPR" H="$H" W="$W" timeout 60 bash -c "$command" 2>&1)"
+  out="$(cd "$W" && MPR="$MPR" H="$H" S="$2/scenes" W="$W" timeout 60 bash -c "$command" 2>&1)"
   rc=$?
   if ((rc == 124)); then fail "$name: ran past 60 s"; continue; fi
   ((rc == status)) || fail "$name: exit status $rc, expected $status: ${out:0:400}"
