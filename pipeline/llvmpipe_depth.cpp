@@ -120,12 +120,15 @@ MPR_CPU_CLONES void LlvmpipeDepth::add(const ClipVertex& a, const ClipVertex& b,
 
 MPR_CPU_CLONES void LlvmpipeDepth::setUp(std::array<const Vec4*, 3> clip, std::array<const Varyings*, 3> attr,
                           std::array<LlWindow, 3> p) {
-  // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions.
-  auto fixed = [](float f) { return saturateToInt64(std::nearbyint(static_cast<double>(f) * 256.0)); };
-  // (Wrapping: a NaN or huge vertex's clamped position must not overflow.)
-  const std::int64_t area =
-      wrappingSub(wrappingMul(wrappingSub(fixed(p[0].x), fixed(p[1].x)), wrappingSub(fixed(p[2].y), fixed(p[0].y))),
-                  wrappingMul(wrappingSub(fixed(p[2].x), fixed(p[0].x)), wrappingSub(fixed(p[0].y), fixed(p[1].y))));
+  // lp_setup_tri.c calc_fixed_position: the winding on 1/256-pixel positions
+  // as its SSE path computes it: each position by cvtps2dq (a NaN or one
+  // past 2^31 is INT32_MIN: a vertex at the clip-space origin, which the
+  // clipper makes where an edge passes through it, has 0 * inf = NaN),
+  // the differences in 32 bits, wrapping, their products in 64.
+  auto fixed = [](float f) { return static_cast<std::uint32_t>(static_cast<std::int32_t>(snapLikeLlvmpipe(f))); };
+  auto diff = [](std::uint32_t a, std::uint32_t b) { return static_cast<std::int64_t>(static_cast<std::int32_t>(a - b)); };
+  const std::int64_t area = wrappingSub(diff(fixed(p[0].x), fixed(p[1].x)) * diff(fixed(p[2].y), fixed(p[0].y)),
+                                        diff(fixed(p[2].x), fixed(p[0].x)) * diff(fixed(p[0].y), fixed(p[1].y)));
   if (area == 0) return;  // llvmpipe draws nothing
   // y-down positions: a positive area here is counter-clockwise in GL's y-up window.
   const bool ccwUp = area > 0;
