@@ -3,15 +3,11 @@
 # inotify), while each command that writes files writes them. The victim
 # file and the victim folder must stay as they were: every output is written
 # through the descriptor that created it and renamed from a held folder.
-# $1 mpr, $2 link_swapper, $3 the source tree.
-set -uo pipefail
-MPR="$1"
-SWAPPER="$2"
-SRC="$3"
-ROOT="$(mktemp -d)"
-trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$ROOT"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+# $1 mpr, $2 the source tree, $3 link_swapper.
+source "$(dirname "${BASH_SOURCE[0]}")/../cli/lib.bash"
+SWAPPER="$3"
+ROOT="$WORK"
+trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$WORK"' EXIT
 
 # attack NAME EXPECTED_STATUSES COMMAND...: runs the command (with $OUT its
 # output folder) under attack; the statuses it may end with ("0 1": written,
@@ -56,5 +52,4 @@ attack test "1 2" bash -c '"$0" test "$1" --junit "$OUT/j.xml" --report "$OUT/re
 attack step_html "0 1" bash -c '"$0" step "$1" --html "$OUT/page"' "$MPR" "$S/stencil_mirror.gls"
 attack conform_report "0 1" bash -c '"$0" conform "$1" --report "$OUT/c"' "$MPR" "$SRC/tests/conformance/alpha_test.gls"
 
-if ((failures)); then echo "$failures failure(s)" >&2; exit 1; fi
-echo "ok: no victim written"
+finish

@@ -27,9 +27,7 @@ std::string contents(const fs::path& p) {
   return ss.str();
 }
 
-std::size_t entries(const fs::path& dir) {
-  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
-}
+std::size_t entries(const fs::path& dir) { return testing::TempFolder::entryCount(dir); }
 
 TEST(AtomicFile, WritesAndLeavesNoTemporary) {
   TempDir d;

@@ -23,9 +23,7 @@ struct TempDir : testing::TempFolder {
   TempDir() : TempFolder("mpr-signal") {}
 };
 
-std::size_t entries(const fs::path& dir) {
-  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
-}
+std::size_t entries(const fs::path& dir) { return testing::TempFolder::entryCount(dir); }
 
 // Runs `body` in a child process with the handler installed; returns the
 // signal that ended the child (0 when it exited).
@@ -67,7 +65,7 @@ TEST(SignalCleanup, AHalfMadeFolderIsRemovedWithItsFiles) {
     const int parent = ::open(d.path.c_str(), O_RDONLY | O_DIRECTORY);
     fs::create_directory(d.path / ".page.new-1");
     SignalCleanup folder(parent, ".page.new-1", SignalCleanup::Kind::Folder);
-    for (int i = 0; i < 300; ++i) std::ofstream(d.path / ".page.new-1" / ("f" + std::to_string(i))) << i;
+    for (int i = 0; i < 300; ++i) std::ofstream(d.path / ".page.new-1" / std::to_string(i)) << i;
     fs::create_directory(d.path / ".page.new-1" / "empty");
     std::raise(SIGTERM);
   });
