@@ -11,13 +11,30 @@
 namespace mpr {
 namespace {
 
+// draw_pt.c draw_vbo runs the draw module (its clipper, and llvmpipe's
+// set-up behind it) with denormals flushed to zero
+// (util_fpstate_set_denorms_to_zero, SSE's FTZ and DAZ): an operand below
+// the smallest normal float counts as zero, and so does such a result. The
+// clipper's arithmetic below follows it: where a plane distance of 1 meets
+// one of 1e38, t = 1 / 1e38 is denormal, so draw's new vertex is the outer
+// vertex itself, not one a unit away, and a rectangle of +-1e38 clips to
+// nothing (glRectf -1.7e38 -1.7e38 1.7e38 1.7e38 draws no pixel).
+inline float flushDenormal(float v) {
+  return std::fabs(v) < std::numeric_limits<float>::min() ? std::copysign(0.0f, v) : v;
+}
+inline float addFtz(float a, float b) { return flushDenormal(flushDenormal(a) + flushDenormal(b)); }
+inline float subFtz(float a, float b) { return flushDenormal(flushDenormal(a) - flushDenormal(b)); }
+inline float mulFtz(float a, float b) { return flushDenormal(flushDenormal(a) * flushDenormal(b)); }
+inline float divFtz(float a, float b) { return flushDenormal(flushDenormal(a) / flushDenormal(b)); }
+
 LlWindow toLlWindow(const DrawVertex& v, const WindowTransform& t) {
   if (v.original) return llvmpipeWindow(v.clip, t);
-  // draw_pipe_clip.c interp(): the same in C, unfused
-  const float oow = 1.0f / v.clip.w;
+  // draw_pipe_clip.c interp(): the same in C, unfused (denormals flushed)
+  const float oow = divFtz(1.0f, v.clip.w);
   const float flippedTransY = static_cast<float>(t.fbHeight) - t.transY;
-  return {v.clip.x * oow * t.scaleX + t.transX, v.clip.y * oow * -t.scaleY + flippedTransY,
-          v.clip.z * oow * t.scaleZ + t.transZ};
+  auto map = [oow](float c, float scale, float trans) { return addFtz(mulFtz(mulFtz(c, oow), scale), trans); };
+  return {map(v.clip.x, t.scaleX, t.transX), map(v.clip.y, -t.scaleY, flippedTransY),
+          map(v.clip.z, t.scaleZ, t.transZ)};
 }
 
 // draw's fixed clip planes in its bit order (draw_context.c draw->plane[0..5],
@@ -43,14 +60,18 @@ Vec4 drawPlane(std::size_t i, const std::vector<ClipPlane>& userPlanes) {
 void clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::uint32_t mask, const std::vector<ClipPlane>& userPlanes,
                   std::vector<DrawVertex>& in, std::vector<DrawVertex>& out) {
   in.assign(tri.begin(), tri.end());
-  auto dot4 = [](const Vec4& a, const Vec4& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; };
+  // (Every operation with denormals flushed, as draw_vbo runs it.)
+  auto dot4 = [](const Vec4& a, const Vec4& b) {
+    return addFtz(addFtz(addFtz(mulFtz(a.x, b.x), mulFtz(a.y, b.y)), mulFtz(a.z, b.z)), mulFtz(a.w, b.w));
+  };
   // interp(): position and every varying (all perspective-interpolated, the
   // colours' mode when not flat) out + t (in - out).
-  auto lerp = [](float t, const DrawVertex& o, const DrawVertex& i) {
-    DrawVertex d{Vec4(o.clip.x + t * (i.clip.x - o.clip.x), o.clip.y + t * (i.clip.y - o.clip.y),
-                      o.clip.z + t * (i.clip.z - o.clip.z), o.clip.w + t * (i.clip.w - o.clip.w)),
+  auto linterp = [](float t, float o, float i) { return addFtz(o, mulFtz(t, subFtz(i, o))); };
+  auto lerp = [&linterp](float t, const DrawVertex& o, const DrawVertex& i) {
+    DrawVertex d{Vec4(linterp(t, o.clip.x, i.clip.x), linterp(t, o.clip.y, i.clip.y), linterp(t, o.clip.z, i.clip.z),
+                      linterp(t, o.clip.w, i.clip.w)),
                  false, {}};
-    for (int k = 0; k < kVaryings; ++k) d.attr[k] = o.attr[k] + t * (i.attr[k] - o.attr[k]);
+    for (int k = 0; k < kVaryings; ++k) d.attr[k] = linterp(t, o.attr[k], i.attr[k]);
     return d;
   };
   while (mask != 0 && in.size() >= 3) {
@@ -74,11 +95,11 @@ void clipLikeDraw(const std::array<DrawVertex, 3>& tri, std::uint32_t mask, cons
         differentSign = !(dp < 0.0f);
       }
       if (differentSign) {
-        const float denom = dp - dpPrev;
+        const float denom = subFtz(dp, dpPrev);
         if (dp < 0.0f)  // going out
-          out.push_back(-dp < dpPrev ? lerp(dp / denom, v, prev) : lerp(-dpPrev / denom, prev, v));
+          out.push_back(-dp < dpPrev ? lerp(divFtz(dp, denom), v, prev) : lerp(divFtz(-dpPrev, denom), prev, v));
         else  // coming back in
-          out.push_back(-dpPrev < dp ? lerp(-dpPrev / denom, prev, v) : lerp(dp / denom, v, prev));
+          out.push_back(-dpPrev < dp ? lerp(divFtz(-dpPrev, denom), prev, v) : lerp(divFtz(dp, denom), v, prev));
       }
       prev = v;
       dpPrev = dp;
