@@ -167,6 +167,8 @@ void OutputSet::write(const std::string& path, const std::string& bytes) {
 void OutputSet::commit() {
   for (const auto& f : pending_) f->commit();
   committed_ = true;
+  // The folders hold outputs now: an interrupt from here on leaves them.
+  for (CreatedFolder& c : createdFolders_) c.cleanup.release();
 }
 
 std::vector<std::string> npyDumpFileNames() {

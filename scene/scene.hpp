@@ -71,7 +71,7 @@ struct SceneObject {
   int material = 0;   // index into Scene::materials
   bool castsShadows = true;  // a shadow volume per light (quads and planes default to false)
   int line = 0;       // where the object is defined, for messages
-  std::string meshFile;  // the mesh file it was read from (empty for a primitive): an input no output may replace
+  std::string meshFile = {};  // the mesh file it was read from (empty for a primitive): an input no output may replace
 };
 
 // Where a refracted view's image map M3 (1994 eqs. 1-3) is applied. The
