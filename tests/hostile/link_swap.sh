@@ -50,6 +50,7 @@ attack reference_tif "0 1" bash -c '"$0" reference --width 24 --height 18 --spp 
 attack gl "0 1" bash -c '"$0" gl "$1" --dump "$OUT/g"' "$MPR" "$SRC/tests/conformance/alpha_test.gls"
 attack test "1 2" bash -c '"$0" test "$1" --junit "$OUT/j.xml" --report "$OUT/rep"' "$MPR" "$SRC/tests/probes/fail/stencil_pixel.gls"
 attack step_html "0 1" bash -c '"$0" step "$1" --html "$OUT/page"' "$MPR" "$S/stencil_mirror.gls"
+attack accuracy_report "0 1" bash -c '"$0" accuracy --width 16 --height 12 --spp 1 --repeat 1 --vary render.shadows=true,false -q --report "$OUT/acc"' "$MPR"
 attack conform_report "0 1" bash -c '"$0" conform "$1" --report "$OUT/c"' "$MPR" "$SRC/tests/conformance/alpha_test.gls"
 
 finish
