@@ -364,6 +364,9 @@ class GLContext : private detail::RowThreads {
     FanShading shading;
     LlvmpipeDepth::Triangle triangle;
     std::int64_t x0, x1, y0, y1;  // columns, and rows in llvmpipe's y-down order
+    // llvmpipe's draw region (framebuffer within the scissor box), inclusive,
+    // y-down: for a triangle whose steps wrap (LlvmpipeTileRaster).
+    std::array<int, 4> llvmpipeRegion{};
   };
   struct DeferredTriangle {  // the index of its set-up in deferredClipped_ or deferredFan_
     std::uint32_t index;

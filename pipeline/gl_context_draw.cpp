@@ -11,6 +11,7 @@
 #include "pipeline/llvmpipe_depth.hpp"
 #include "pipeline/llvmpipe_math.hpp"
 #include "pipeline/llvmpipe_row_spans.hpp"
+#include "pipeline/llvmpipe_tile_raster.hpp"
 #include "pipeline/mesa_matrix_inverse.hpp"
 #include "pipeline/span_shading.hpp"
 #include "util/transforms.hpp"
@@ -852,6 +853,20 @@ void GLContext::rasterizeLlvmpipeFan(const LlvmpipeDepth& depth) {
     job.x1 = std::min<std::int64_t>(region.x1 - 1, floorDivide(maxX, 256) + 1);
     job.y0 = std::max<std::int64_t>(rowLo, floorDivide(minY, 256));
     job.y1 = std::min<std::int64_t>(rowHi, floorDivide(maxY, 256) + 1);
+    if (t.wrapsSteps) {
+      // lp_setup.c draw_regions: the framebuffer, within the scissor box
+      // (not the viewport). Blocks are filled whole past the triangle's own
+      // box, and so past the region where the box kept llvmpipe from adding
+      // a scissor plane on that side: any pixel of the framebuffer.
+      PixelRect r = fb_.bounds();
+      if (scissorEnabled_) r = r.intersect(scissorBox_);
+      if (r.empty()) continue;
+      job.llvmpipeRegion = {r.x0, fbHeight - r.y1, r.x1 - 1, fbHeight - 1 - r.y0};
+      job.x0 = 0;
+      job.x1 = fb_.width() - 1;
+      job.y0 = 0;
+      job.y1 = fbHeight - 1;
+    }
     if (job.x0 > job.x1 || job.y0 > job.y1) continue;
     if (deferring_) {
       defer(job);
@@ -873,12 +888,7 @@ void GLContext::drawRows(const FanTriangleRows& job, const DrawState& state, Fra
   // == phase (the same rows a clipped triangle's share holds).
   const std::int64_t wanted = ((fbHeight - 1 - phase) % stride + stride) % stride;  // yDown mod stride
   const std::int64_t first = job.y0 + ((wanted - job.y0 % stride) % stride + stride) % stride;
-  // Each row's span: the pixels a test of covers()' half-planes would pass.
-  LlvmpipeRowSpans rows(t, first, stride, job.x0, job.x1);
-  for (std::int64_t yDown = first; yDown <= job.y1; yDown += stride) {
-    std::int64_t spanLo, spanHi;
-    rows.next(spanLo, spanHi);
-    const int y = fbHeight - 1 - static_cast<int>(yDown);
+  auto drawSpan = [&](int y, std::int64_t spanLo, std::int64_t spanHi) {
     for (std::int64_t from = spanLo; from <= spanHi; from += FragmentSpan::kCapacity) {
       fragments.x = static_cast<int>(from);
       fragments.y = y;
@@ -887,6 +897,32 @@ void GLContext::drawRows(const FanTriangleRows& job, const DrawState& state, Fra
       shadeFanSpan(job.shading, fragments);
       submitSpan(fragments, state, tally);
     }
+  };
+  if (t.wrapsSteps) {
+    // Steps that wrap: the pixels llvmpipe's tiles and blocks reach, each
+    // row's runs of them (rare: an edge through the clip-space origin).
+    const std::array<int, 4>& r = job.llvmpipeRegion;
+    const LlvmpipeTileRaster raster(t, r[0], r[1], r[2], r[3]);
+    if (raster.emulated()) {
+      for (std::int64_t yDown = first; yDown <= job.y1; yDown += stride) {
+        const int y = fbHeight - 1 - static_cast<int>(yDown);
+        for (std::int64_t x = job.x0; x <= job.x1; ++x) {
+          if (!raster.covers(static_cast<int>(x), static_cast<int>(yDown))) continue;
+          std::int64_t last = x;
+          while (last < job.x1 && raster.covers(static_cast<int>(last + 1), static_cast<int>(yDown))) ++last;
+          drawSpan(y, x, last);
+          x = last;
+        }
+      }
+      return;
+    }
+  }
+  // Each row's span: the pixels a test of covers()' half-planes would pass.
+  LlvmpipeRowSpans rows(t, first, stride, job.x0, job.x1);
+  for (std::int64_t yDown = first; yDown <= job.y1; yDown += stride) {
+    std::int64_t spanLo, spanHi;
+    rows.next(spanLo, spanHi);
+    drawSpan(fbHeight - 1 - static_cast<int>(yDown), spanLo, spanHi);
   }
 }
 

@@ -187,6 +187,12 @@ MPR_CPU_CLONES void LlvmpipeDepth::setUp(std::array<const Vec4*, 3> clip, std::a
     t.fixedY[i] = snapLikeLlvmpipe(a.y);
   }
   for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    constexpr std::int64_t kLimit = std::int64_t{1} << 23;  // 2^31 once shifted by 8
+    const std::int64_t dx = t.fixedX[i] - t.fixedX[j], dy = t.fixedY[i] - t.fixedY[j];
+    t.wrapsSteps = t.wrapsSteps || dx < -kLimit || dx >= kLimit || dy < -kLimit || dy >= kLimit;
+  }
+  for (int i = 0; i < 3; ++i) {
     // do_triangle_ccw: plane i runs from vertex i to i + 1; dcdx = y[i] -
     // y[i+1], dcdy = x[i] - x[i+1], c = dcdx x[i] - dcdy y[i], plus one on
     // the edges that own their ties: left edges, and the horizontal ones

@@ -114,6 +114,12 @@ struct LlvmpipeDepth {
     // edges' half-plane constants of do_triangle_ccw (fill rule included).
     std::array<std::int64_t, 3> fixedX, fixedY, c;
     bool ccwUp = true;  // counter-clockwise in GL's y-up window space (its facing)
+    // Whether an edge's step, x[i] - x[i+1] or y[i] - y[i+1] in 1/256 pixel,
+    // leaves llvmpipe's 32 bits once shifted by FIXED_ORDER (a vertex at
+    // the clip-space origin, INT32_MIN): then its block rejects and
+    // per-pixel tests are not covers()' exact test (LlvmpipeTileRaster
+    // walks them).
+    bool wrapsSteps = false;
     // Whether llvmpipe's rasterizer covers the pixel (x, yDown).
     bool covers(int x, int yDown) const;
   };
