@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <bit>
 
+#include "raster/fixed_point.hpp"
+
 namespace mpr {
 namespace {
 
-// 32-bit and 64-bit arithmetic as the SSE instructions (and the C on
-// x86-64) do it: two's complement, wrapping.
+// 32-bit arithmetic as the SSE instructions (and the C on x86-64) do it:
+// two's complement, wrapping (64-bit: raster/fixed_point.hpp's wrapping*).
 inline std::int32_t add32(std::int32_t a, std::int32_t b) {
   return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) + static_cast<std::uint32_t>(b));
 }
@@ -20,15 +22,6 @@ inline std::int32_t shl32(std::int32_t a, int n) {
   return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) << n);
 }
 inline std::int32_t lo32(std::int64_t v) { return static_cast<std::int32_t>(static_cast<std::uint32_t>(v)); }
-inline std::int64_t add64(std::int64_t a, std::int64_t b) {
-  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b));
-}
-inline std::int64_t sub64(std::int64_t a, std::int64_t b) {
-  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) - static_cast<std::uint64_t>(b));
-}
-inline std::int64_t mul64(std::int64_t a, std::int64_t b) {
-  return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b));
-}
 
 // lp_rast_tri.c build_mask_linear_sse: bit 4 row + column set where
 // c + column dcdx + row dcdy (32 bits, wrapping; the saturating packs keep
@@ -80,8 +73,8 @@ LlvmpipeTileRaster::LlvmpipeTileRaster(const LlvmpipeDepth::Triangle& t, int reg
     const int j = (i + 1) % 3;
     const std::int32_t dcdx = sub32(y[i], y[j]), dcdy = sub32(x[i], x[j]);
     Plane& p = plane_[static_cast<std::size_t>(i)];
-    p.c = sub64(mul64(dcdx, x[i]), mul64(dcdy, y[i]));
-    if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) p.c = add64(p.c, 1);
+    p.c = wrappingSub(wrappingMul(dcdx, x[i]), wrappingMul(dcdy, y[i]));
+    if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) p.c = wrappingAdd(p.c, 1);
     p.dcdx = shl32(dcdx, 8);
     p.dcdy = shl32(dcdy, 8);
     p.eo = static_cast<std::uint32_t>(dcdy >= 0 ? p.dcdy : 0) - static_cast<std::uint32_t>(dcdx < 0 ? p.dcdx : 0);
@@ -126,11 +119,11 @@ bool LlvmpipeTileRaster::covers(int x, int yDown) const {
     unsigned partial = 0;
     for (int i = 0; i < planes_; ++i) {
       const Plane& p = plane_[static_cast<std::size_t>(i)];
-      const std::int64_t c = sub64(add64(p.c, mul64(mul64(p.dcdy, tileY), kTileSize)), mul64(mul64(p.dcdx, tx), kTileSize));
+      const std::int64_t c = wrappingSub(wrappingAdd(p.c, wrappingMul(wrappingMul(p.dcdy, tileY), kTileSize)), wrappingMul(wrappingMul(p.dcdx, tx), kTileSize));
       const std::int64_t eo = static_cast<std::int64_t>(p.eo) * kTileSize;
-      const std::int64_t ei = mul64(static_cast<std::int64_t>(sub32(p.dcdy, p.dcdx)) - static_cast<std::int64_t>(p.eo), kTileSize);
-      out = out || add64(c, eo) < 0;
-      if (sub64(add64(c, ei), 1) < 0) partial |= 1u << i;
+      const std::int64_t ei = wrappingMul(static_cast<std::int64_t>(sub32(p.dcdy, p.dcdx)) - static_cast<std::int64_t>(p.eo), kTileSize);
+      out = out || wrappingAdd(c, eo) < 0;
+      if (wrappingSub(wrappingAdd(c, ei), 1) < 0) partial |= 1u << i;
     }
     if (out) {
       if (in) return false;  // exiting the triangle: the row is done
@@ -152,7 +145,7 @@ bool LlvmpipeTileRaster::coversInTile(unsigned planeMask, int tileX, int tileY, 
     if (planeMask & (1u << i)) {
       const Plane& p = plane_[static_cast<std::size_t>(i)];
       planes[static_cast<std::size_t>(n)] = &p;
-      c[static_cast<std::size_t>(n)] = sub64(add64(p.c, mul64(p.dcdy, by)), mul64(p.dcdx, bx));
+      c[static_cast<std::size_t>(n)] = wrappingSub(wrappingAdd(p.c, wrappingMul(p.dcdy, by)), wrappingMul(p.dcdx, bx));
       ++n;
     }
   // lp_rast_triangle (16x16 blocks of the tile), then do_block_16 (4x4
@@ -169,7 +162,7 @@ bool LlvmpipeTileRaster::coversInTile(unsigned planeMask, int tileX, int tileY, 
       const std::int32_t ei = shl32(sub32(add32(dcdy, dcdx), cox), shift);
       const std::int32_t coxS = shl32(cox, shift);
       const std::int32_t co = add32(lo32(cj >> 8), coxS);
-      const std::int32_t cdiff = add32(sub32(ei, coxS), sub32(lo32(sub64(cj, 1) >> 8), lo32(cj >> 8)));
+      const std::int32_t cdiff = add32(sub32(ei, coxS), sub32(lo32(wrappingSub(cj, 1) >> 8), lo32(cj >> 8)));
       outMask |= signMask(co, shl32(dcdx, shift), shl32(dcdy, shift));
       partMask |= signMask(add32(co, cdiff), shl32(dcdx, shift), shl32(dcdy, shift));
     }
@@ -183,14 +176,14 @@ bool LlvmpipeTileRaster::coversInTile(unsigned planeMask, int tileX, int tileY, 
     for (int j = 0; j < n; ++j) {
       const Plane& p = *planes[static_cast<std::size_t>(j)];
       c[static_cast<std::size_t>(j)] =
-          add64(sub64(c[static_cast<std::size_t>(j)], mul64(p.dcdx, ix * size)), mul64(p.dcdy, iy * size));
+          wrappingAdd(wrappingSub(c[static_cast<std::size_t>(j)], wrappingMul(p.dcdx, ix * size)), wrappingMul(p.dcdy, iy * size));
     }
   }
   // do_block_4: each pixel on (c - 1) >> 8 in 32 bits.
   unsigned mask = 0xffff;
   for (int j = 0; j < n; ++j) {
     const Plane& p = *planes[static_cast<std::size_t>(j)];
-    mask &= ~signMask(lo32(sub64(c[static_cast<std::size_t>(j)], 1) >> 8), sub32(0, p.dcdx) >> 8, p.dcdy >> 8);
+    mask &= ~signMask(lo32(wrappingSub(c[static_cast<std::size_t>(j)], 1) >> 8), sub32(0, p.dcdx) >> 8, p.dcdy >> 8);
   }
   return (mask & (1u << ((yDown - by) * 4 + (x - bx)))) != 0;
 }
