@@ -12,6 +12,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "framebuffer/framebuffer.hpp"
@@ -916,10 +917,11 @@ Override applyOverride(YAML::Node& doc, const std::string& kv) {
   return o;
 }
 
-// Where a text's second document starts: its "---" (yaml-cpp's parser
-// reports each document's first token; LoadAll keeps only the nodes, whose
-// marks are their first values').
-YAML::Mark secondDocumentStart(const std::string& text, const YAML::Node& second) {
+// Where a text's second document starts (its "---"), if it has one. The
+// parser is asked for two documents at most: yaml-cpp's LoadAll, which asks
+// until none is left, loops for ever on some malformed text (a 524-byte
+// scene found by fuzz/scene_fuzzer), handing on an empty document each time.
+std::optional<YAML::Mark> secondDocumentStart(const std::string& text) {
   struct Starts : YAML::EventHandler {
     std::vector<YAML::Mark> marks;
     void OnDocumentStart(const YAML::Mark& m) override { marks.push_back(m); }
@@ -934,9 +936,10 @@ YAML::Mark secondDocumentStart(const std::string& text, const YAML::Node& second
   } starts;
   std::istringstream in(text);
   YAML::Parser parser(in);
-  while (starts.marks.size() < 2 && parser.HandleNextDocument(starts)) {
+  for (int i = 0; i < 2 && parser.HandleNextDocument(starts); ++i) {
   }
-  return starts.marks.size() > 1 ? starts.marks[1] : second.Mark();
+  if (starts.marks.size() > 1) return starts.marks[1];
+  return std::nullopt;
 }
 
 }  // namespace
@@ -945,18 +948,24 @@ Scene loadSceneText(const std::string& text, const std::string& file, const std:
                     bool confine) {
   YAML::Node doc;
   try {
-    // Every document, not the first only: YAML::Load read up to a second
-    // document's "---" and dropped the rest of the file without a word.
-    const std::vector<YAML::Node> docs = YAML::LoadAll(text);
-    if (docs.size() > 1) {
-      const YAML::Mark m = secondDocumentStart(text, docs[1]);
-      throw SceneError(file, m.line + 1, m.column + 1,
-                       "a second YAML document starts here; a scene file holds one (remove this '---' and what "
-                       "follows, or merge it into the first)");
+    // YAML::Load reads up to a second document's "---" and drops the rest
+    // of the file without a word: a second document is refused.
+    if (const std::optional<YAML::Mark> m = secondDocumentStart(text)) {
+      // A real second document follows a "---" or a "..." that ended the
+      // first; anything else is text yaml-cpp could not fit into the first.
+      const std::size_t pos = static_cast<std::size_t>(std::max(m->pos, 0));
+      const std::size_t before = text.find_last_not_of(" \t\r\n", pos == 0 ? 0 : pos - 1);
+      const bool marked = text.compare(pos, 3, "---") == 0 ||
+                          (pos > 0 && before != std::string::npos && before >= 2 && text.compare(before - 2, 3, "...") == 0);
+      throw SceneError(file, m->line + 1, m->column + 1,
+                       marked ? "a second YAML document starts here; a scene file holds one (remove this '---' and "
+                                "what follows, or merge it into the first)"
+                              : "YAML syntax: this does not continue the document above it (a scene file holds one "
+                                "YAML document)");
     }
     // (An empty text has no document: a null node of its own, which a --set
     // path can make a mapping of.)
-    doc = docs.empty() ? YAML::Node(YAML::NodeType::Null) : docs[0];
+    doc = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw SceneError(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg);
   }
