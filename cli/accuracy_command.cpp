@@ -28,8 +28,8 @@ struct AccuracyOptions {
   std::string scene, reference, report;
   std::vector<std::string> vary, sets;
   bool product = false, quiet = false;
-  int repeat = 3, width = 0, height = 0, spp = 16, bounces = -1, threads = 0;
-  std::string model = "pipeline";
+  int repeat = 3, width = 0, height = 0;
+  TracerOptions tracer;  // the reference: --spp, --model, --bounces, --threads
   double budget = 600.0;
   SceneLimits limits;
 };
@@ -68,11 +68,7 @@ class AccuracyRun {
 
  private:
   void validateOptions() const {
-    if (o_.repeat < 1) throw UserError("mpr accuracy: --repeat must be at least 1, not " + std::to_string(o_.repeat));
-    if (o_.spp < 1) throw UserError("mpr accuracy: --spp must be at least 1, not " + std::to_string(o_.spp));
     if (!(o_.budget > 0.0)) throw UserError("mpr accuracy: --budget must be a positive number of seconds");
-    if (o_.model != "pipeline" && o_.model != "physical")
-      throw UserError("mpr accuracy: --model must be pipeline or physical, not '" + o_.model + "'");
   }
 
   std::vector<VaryKey> varyKeys() const {
@@ -149,10 +145,10 @@ class AccuracyRun {
 
   ReferenceOptions referenceOptions() const {
     ReferenceOptions r;
-    r.samplesPerPixel = o_.spp;
-    r.model = o_.model == "physical" ? ShadingModel::Physical : ShadingModel::Pipeline;
-    r.bounces = o_.bounces;
-    r.threads = o_.threads;
+    r.samplesPerPixel = o_.tracer.spp;
+    r.model = o_.tracer.model == "physical" ? ShadingModel::Physical : ShadingModel::Pipeline;
+    r.bounces = o_.tracer.bounces;
+    r.threads = o_.tracer.threads;
     return r;
   }
 
@@ -179,7 +175,7 @@ class AccuracyRun {
       r.samplesPerPixel = 1;
       const auto t0 = std::chrono::steady_clock::now();
       renderReference(probe, r);
-      referenceEstimate = seconds(t0) * 16.0 * o_.spp;
+      referenceEstimate = seconds(t0) * 16.0 * o_.tracer.spp;
       total += referenceEstimate;
     }
     if (total <= o_.budget) return;
@@ -201,8 +197,8 @@ class AccuracyRun {
     const auto t0 = std::chrono::steady_clock::now();
     const ReferenceImage im = renderReference(base_, r);
     report_.referenceSeconds = seconds(t0);
-    report_.reference = std::to_string(o_.spp) + " spp, " + o_.model + " model, " +
-                        (o_.bounces < 0 ? std::string("bounces until below 1/512") : std::to_string(o_.bounces) + " bounces");
+    report_.reference = std::to_string(o_.tracer.spp) + " spp, " + o_.tracer.model + " model, " +
+                        (o_.tracer.bounces < 0 ? std::string("bounces until below 1/512") : std::to_string(o_.tracer.bounces) + " bounces");
     if (tty_) std::cerr << "\r" << std::string(60, ' ') << "\r";
     if (!o_.quiet) std::cerr << "accuracy: reference traced in " << fixedText(report_.referenceSeconds, 2) << " s\n";
     return quantiseReference(im);
@@ -294,12 +290,7 @@ void addAccuracyCommand(CLI::App& app, int& exitCode) {
   c->add_option("--vary", o->vary, "KEY=V1,V2,... a scene key and its values (repeatable)");
   c->add_flag("--product", o->product, "render every combination of the --vary values");
   c->add_option("--reference", o->reference, "compare with this image (PNG/TIFF/EXR, e.g. from mpr reference)");
-  c->add_option("--spp", o->spp, "reference samples per pixel (default 16)")->check(CLI::Range(1, 65536));
-  c->add_option("--model", o->model, "reference shading model: pipeline (default) or physical")
-      ->check(CLI::IsMember({"pipeline", "physical"}));
-  c->add_option("--bounces", o->bounces, "reference specular bounces (default: until below 1/512)")
-      ->check(CLI::Range(-1, 100));
-  c->add_option("--threads", o->threads, "reference threads (default: all)")->check(CLI::Range(0, 1024));
+  addTracerOptions(*c, o->tracer);
   c->add_option("--repeat", o->repeat, "pipeline runs per setting; the median is reported (default 3)")
       ->check(CLI::Range(1, 1000));
   c->add_option("--width", o->width, "image width (overrides render.width)")->check(CLI::Range(1, 16384));

@@ -24,8 +24,7 @@ struct ReferenceCommandOptions {
   std::string scene;
   std::string output = "out/reference.png";
   int width = 0, height = 0;
-  int spp = 16, bounces = -1, threads = 0;
-  std::string model = "pipeline";
+  TracerOptions tracer;
   std::vector<std::string> sets;
   SceneLimits limits;  // --confine only: the tracer makes no passes (--spp and --bounces bound it)
 };
@@ -50,10 +49,10 @@ int runReference(const ReferenceCommandOptions& o) {
     return 2;
   }
   ReferenceOptions options;
-  options.samplesPerPixel = o.spp;
-  options.bounces = o.bounces;
-  options.threads = o.threads;
-  options.model = o.model == "physical" ? ShadingModel::Physical : ShadingModel::Pipeline;
+  options.samplesPerPixel = o.tracer.spp;
+  options.bounces = o.tracer.bounces;
+  options.threads = o.tracer.threads;
+  options.model = o.tracer.model == "physical" ? ShadingModel::Physical : ShadingModel::Pipeline;
   const bool tty = isatty(2);
   const auto t0 = std::chrono::steady_clock::now();
   if (tty)
@@ -73,8 +72,8 @@ int runReference(const ReferenceCommandOptions& o) {
   }
   const ReferenceStats& s = image.stats;
   const double rays = static_cast<double>(s.cameraRays + s.specularRays + s.shadowRays);
-  std::cerr << "traced " << scene.file << " (" << image.width << "x" << image.height << ", " << o.spp << " spp, "
-            << o.model << ") to " << o.output << " in " << fixedText(s.seconds, 2) << " s ("
+  std::cerr << "traced " << scene.file << " (" << image.width << "x" << image.height << ", " << o.tracer.spp << " spp, "
+            << o.tracer.model << ") to " << o.output << " in " << fixedText(s.seconds, 2) << " s ("
             << fixedText(s.seconds > 0.0 ? rays / s.seconds / 1e6 : 0.0, 2) << " M rays/s)\n";
   return 0;
 }
@@ -91,12 +90,7 @@ void addReferenceCommand(CLI::App& app, int& exitCode) {
       "Scene errors print FILE:LINE:COLUMN, exit with status 2 and write nothing.");
   c->add_option("scene", o->scene, "scene file (YAML); none traces the default scene");
   c->add_option("-o,--output", o->output, "output image: .png, .tif, .tiff (8-bit) or .exr (linear float)");
-  c->add_option("--spp", o->spp, "samples per pixel, stratified (default 16)")->check(CLI::Range(1, 65536));
-  c->add_option("--model", o->model, "local model: pipeline (GL 1.x lighting) or physical (Ward's eq. 5 where roughness is given)")
-      ->check(CLI::IsMember({"pipeline", "physical"}));
-  c->add_option("--bounces", o->bounces, "specular faces a path may pass (default: until its weight is below 1/512)")
-      ->check(CLI::Range(-1, 100));
-  c->add_option("--threads", o->threads, "worker threads (default: every hardware thread)")->check(CLI::Range(0, 1024));
+  addTracerOptions(*c, o->tracer);
   c->add_option("--width", o->width, "image width (overrides render.width)")->check(CLI::Range(1, 16384));
   c->add_option("--height", o->height, "image height (overrides render.height)")->check(CLI::Range(1, 16384));
   c->add_option("--set", o->sets, "override a scene value: key.path=value (repeatable)");

@@ -26,4 +26,19 @@ std::string imageOutputProblem(const std::string& command, const std::string& pa
   return "mpr " + command + ": output '" + path + "' must end in .png, .tif, .tiff or .exr";
 }
 
+void addTracerOptions(CLI::App& command, TracerOptions& o) {
+  command.add_option("--spp", o.spp, "reference samples per pixel, stratified (default 16)")->check(CLI::Range(1, 65536));
+  command
+      .add_option("--model", o.model,
+                  "reference local model: pipeline (GL 1.x lighting, default) or physical (Ward's eq. 5 where roughness "
+                  "is given)")
+      ->check(CLI::IsMember({"pipeline", "physical"}));
+  command
+      .add_option("--bounces", o.bounces,
+                  "specular faces a reference path may pass (default: until its weight is below 1/512)")
+      ->check(CLI::Range(-1, 100));
+  command.add_option("--threads", o.threads, "reference tracer threads (default: every hardware thread)")
+      ->check(CLI::Range(0, 1024));
+}
+
 }  // namespace mpr::cli
