@@ -30,7 +30,7 @@
 #include <cstdint>
 #include <string>
 
-#include "pipeline/gl_api.hpp"
+#include "pipeline/gl/gl_api.hpp"
 #include "algorithms/stencil_levels.hpp"
 
 namespace mpr {

@@ -14,10 +14,10 @@
 #include <string>
 #include <string_view>
 
-#include "pipeline/gl_api.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_emulator.hpp"
-#include "pipeline/gl_trace_writer.hpp"
+#include "pipeline/gl/gl_api.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "pipeline/gl/gl_emulator.hpp"
+#include "script/gl_trace_writer.hpp"
 
 namespace mpr {
 
@@ -36,7 +36,7 @@ class GLCommandStream final : public GLApi {
     if (writer_) writer_->method args;                            \
     afterCall();                                                  \
   }
-#include "pipeline/gl_calls.def"
+#include "pipeline/gl/gl_calls.def"
 
   // Starts a pass: `kind` groups statistics ("ambient", "light"), `label` is the @pass line.
   void pass(const std::string& kind, const std::string& label);

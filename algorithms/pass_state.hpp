@@ -12,7 +12,7 @@
 #include <optional>
 #include <utility>
 
-#include "pipeline/gl_api.hpp"
+#include "pipeline/gl/gl_api.hpp"
 
 namespace mpr {
 

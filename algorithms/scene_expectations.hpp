@@ -11,7 +11,7 @@
 
 #include "algorithms/gl_command_stream.hpp"
 #include "framebuffer/script_probe.hpp"
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 #include "scene/scene.hpp"
 
 namespace mpr {

@@ -4,7 +4,7 @@
 #include "algorithms/image_samples.hpp"
 #include "algorithms/ref_face.hpp"
 #include "algorithms/view_camera.hpp"
-#include "pipeline/gl_api.hpp"
+#include "pipeline/gl/gl_api.hpp"
 #include "scene/scene.hpp"
 
 namespace mpr {

@@ -5,7 +5,7 @@
 #include <GL/gl.h>
 #include <benchmark/benchmark.h>
 
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 
 namespace {
 

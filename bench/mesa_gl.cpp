@@ -12,8 +12,8 @@
 #include <string>
 
 #include "conformance/mesa_replayer.hpp"
-#include "pipeline/gl_script.hpp"
-#include "pipeline/script_text.hpp"
+#include "script/gl_script.hpp"
+#include "script/script_text.hpp"
 
 int main(int argc, char** argv) {
   std::string driver = "llvmpipe", path;

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <string>
 
-#include "pipeline/gl_script.hpp"
-#include "pipeline/script_text.hpp"
+#include "script/gl_script.hpp"
+#include "script/script_text.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

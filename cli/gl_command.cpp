@@ -12,12 +12,12 @@
 #include "cli/thread_option.hpp"
 #include "framebuffer/image_writer.hpp"
 #include "framebuffer/npy_writer.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_enums.hpp"
-#include "pipeline/gl_script.hpp"
-#include "pipeline/script_read_ahead.hpp"
-#include "pipeline/script_text.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "pipeline/gl/gl_enums.hpp"
+#include "script/gl_script.hpp"
+#include "script/script_read_ahead.hpp"
+#include "script/script_text.hpp"
+#include "script/gl_script_runner.hpp"
 #include "framebuffer/script_probe.hpp"
 
 namespace mpr::cli {

@@ -3,8 +3,8 @@
 #include "algorithms/gl_command_stream.hpp"
 #include "algorithms/scene_renderer.hpp"
 #include "framebuffer/profile.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
 #include "stepper/pixel_history.hpp"
 #include "stepper/pixel_history_text.hpp"
 

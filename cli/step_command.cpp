@@ -15,7 +15,7 @@
 #include "cli/scene_limits.hpp"
 #include "cli/thread_option.hpp"
 #include "cli/step_page.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "script/gl_script_runner.hpp"
 #include "stepper/gl_state_json.hpp"
 #include "stepper/pixel_history.hpp"
 #include "stepper/pixel_history_text.hpp"

@@ -13,7 +13,7 @@
 #include "cli/pixel_history_encoder.hpp"
 #include "stepper/script_passes.hpp"
 #include "cli/web_assets.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "script/gl_script_runner.hpp"
 #include "stepper/gl_state_json.hpp"
 #include "stepper/pixel_history_text.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "framebuffer/profile.hpp"
-#include "pipeline/gl_script.hpp"
+#include "script/gl_script.hpp"
 
 namespace mpr::cli {
 

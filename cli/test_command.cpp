@@ -13,7 +13,7 @@
 #include "cli/scene_limits.hpp"
 #include "cli/scene_test.hpp"
 #include "framebuffer/image_writer.hpp"
-#include "pipeline/gl_script.hpp"
+#include "script/gl_script.hpp"
 #include "scene/scene_loader.hpp"
 #include "stepper/script_test.hpp"
 

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "conformance/osmesa_library.hpp"
-#include "pipeline/gl_dispatch.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "script/gl_dispatch.hpp"
+#include "script/gl_script_runner.hpp"
 #include "util/transforms.hpp"
 
 namespace mpr {
@@ -39,7 +39,7 @@ class MesaApi final : public GLApi {
 #define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) \
   void method params override { gl_.cFunction args; }
 #define MPR_GLU_CALL(...)
-#include "pipeline/gl_calls.def"
+#include "pipeline/gl/gl_calls.def"
 
   void perspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar) override {
     // SGI GLU's construction, multiplied as GLU does (glMultMatrixd).

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "conformance/buffer_set.hpp"
-#include "pipeline/gl_script.hpp"
+#include "script/gl_script.hpp"
 
 namespace mpr {
 

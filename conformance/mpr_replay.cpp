@@ -1,10 +1,10 @@
 #include "conformance/mpr_replay.hpp"
 
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_enums.hpp"
-#include "pipeline/gl_dispatch.hpp"
-#include "pipeline/gl_emulator.hpp"
-#include "pipeline/gl_script_runner.hpp"  // glErrorReport
+#include "pipeline/gl/gl_context.hpp"
+#include "pipeline/gl/gl_enums.hpp"
+#include "script/gl_dispatch.hpp"
+#include "pipeline/gl/gl_emulator.hpp"
+#include "script/gl_script_runner.hpp"  // glErrorReport
 
 namespace mpr {
 

@@ -6,7 +6,7 @@
 
 #include "conformance/buffer_set.hpp"
 #include "framebuffer/profile.hpp"
-#include "pipeline/gl_script.hpp"
+#include "script/gl_script.hpp"
 
 namespace mpr {
 

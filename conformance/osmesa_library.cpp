@@ -49,7 +49,7 @@ Loaded load() {
   std::string missing;
 #define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) bind(handle, #cFunction, l.cFunction, missing);
 #define MPR_GLU_CALL(...)
-#include "pipeline/gl_calls.def"
+#include "pipeline/gl/gl_calls.def"
 #undef MPR_GL_CALL
   bind(handle, "glReadPixels", l.glReadPixels, missing);
   bind(handle, "glPixelStorei", l.glPixelStorei, missing);

@@ -14,7 +14,7 @@ namespace mpr {
 struct OSMesaLibrary {
 #define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) decltype(&::cFunction) cFunction = nullptr;
 #define MPR_GLU_CALL(...)
-#include "pipeline/gl_calls.def"
+#include "pipeline/gl/gl_calls.def"
 #undef MPR_GL_CALL
   decltype(&::glReadPixels) glReadPixels = nullptr;
   decltype(&::glPixelStorei) glPixelStorei = nullptr;

@@ -9,9 +9,9 @@
 
 #include "cli/frame_delta_encoder.hpp"
 #include "cli/page_encoding.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
+#include "script/gl_script_runner.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -26,9 +26,9 @@
 
 #include "cli/pixel_history_encoder.hpp"
 #include "cli/step_page.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
+#include "script/gl_script_runner.hpp"
 #include "stepper/pixel_event_recorder.hpp"
 #include "stepper/pixel_history_text.hpp"
 

@@ -9,10 +9,10 @@
 #include <string>
 #include <string_view>
 
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
-#include "pipeline/gl_script_runner.hpp"
-#include "pipeline/script_text.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
+#include "script/gl_script_runner.hpp"
+#include "script/script_text.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -3,7 +3,7 @@
 // shows for a pass and `mpr step --state N` prints.
 #include <string>
 
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 
 namespace mpr {
 

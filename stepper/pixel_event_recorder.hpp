@@ -13,8 +13,8 @@
 #include <functional>
 #include <vector>
 
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
 
 namespace mpr {
 

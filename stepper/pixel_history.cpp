@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "pipeline/gl_script_runner.hpp"
+#include "script/gl_script_runner.hpp"
 #include "stepper/pixel_event_recorder.hpp"
 #include "stepper/pixel_history_text.hpp"
 #include "stepper/script_passes.hpp"

@@ -5,8 +5,8 @@
 #include <cstddef>
 #include <string>
 
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
 
 namespace mpr {
 

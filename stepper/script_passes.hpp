@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/gl_script.hpp"
+#include "script/gl_script.hpp"
 
 namespace mpr {
 

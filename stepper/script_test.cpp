@@ -1,7 +1,7 @@
 #include "stepper/script_test.hpp"
 
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script_runner.hpp"
 #include "stepper/pixel_history.hpp"
 #include "stepper/pixel_history_text.hpp"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "framebuffer/profile.hpp"
-#include "pipeline/gl_script.hpp"
+#include "script/gl_script.hpp"
 
 namespace mpr {
 

@@ -17,7 +17,7 @@
 
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/stencil_picture.hpp"
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 
 namespace mpr::testing {
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "algorithms/pass_state.hpp"
-#include "pipeline/gl_trace_writer.hpp"
+#include "script/gl_trace_writer.hpp"
 
 namespace mpr {
 namespace {

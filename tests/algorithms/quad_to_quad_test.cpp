@@ -7,7 +7,7 @@
 #include <random>
 
 #include "algorithms/quad_to_quad.hpp"
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 
 namespace mpr {
 namespace {

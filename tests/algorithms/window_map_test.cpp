@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 #include "algorithms/quad_to_quad.hpp"
 
 namespace mpr {

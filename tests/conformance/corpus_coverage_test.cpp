@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "pipeline/gl_script.hpp"
+#include "script/gl_script.hpp"
 
 #ifndef MPR_SOURCE_DIR
 #error "MPR_SOURCE_DIR must point at the source tree"

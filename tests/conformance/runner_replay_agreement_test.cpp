@@ -14,9 +14,9 @@
 
 #include "conformance/mpr_replay.hpp"
 #include "framebuffer/profile.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
+#include "script/gl_script_runner.hpp"
 
 #ifndef MPR_SOURCE_DIR
 #error "MPR_SOURCE_DIR must point at the source tree"

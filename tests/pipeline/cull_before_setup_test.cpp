@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "framebuffer/profile.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/gl_script.hpp"
-#include "pipeline/gl_script_runner.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "script/gl_script.hpp"
+#include "script/gl_script_runner.hpp"
 #include "util/number_text.hpp"
 
 namespace mpr {

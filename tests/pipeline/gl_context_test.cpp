@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 
 namespace mpr {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "pipeline/fog.hpp"
-#include "pipeline/lighting.hpp"
+#include "raster/fog.hpp"
+#include "pipeline/draw/lighting.hpp"
 
 namespace mpr {
 namespace {

@@ -5,9 +5,9 @@
 #include <GL/gl.h>
 #include <gtest/gtest.h>
 
-#include "pipeline/fog.hpp"
-#include "pipeline/gl_context.hpp"
-#include "pipeline/lighting.hpp"
+#include "raster/fog.hpp"
+#include "pipeline/gl/gl_context.hpp"
+#include "pipeline/draw/lighting.hpp"
 
 namespace mpr {
 namespace {

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "framebuffer/stencil_picture.hpp"
-#include "pipeline/gl_context.hpp"
+#include "pipeline/gl/gl_context.hpp"
 
 namespace mpr {
 namespace {
