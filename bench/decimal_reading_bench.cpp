@@ -9,6 +9,7 @@
 
 #include <charconv>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <random>
@@ -59,8 +60,37 @@ Tokens traceTokens(std::size_t lines, std::size_t distinct) {
   return t;
 }
 
+// The numbers of a real trace (MPR_BENCH_TRACE=FILE.gls, e.g. one written
+// by mpr render --trace), in their order: how often and how soon they repeat
+// is the trace's own.
+Tokens fileTokens(const char* path) {
+  Tokens t;
+  std::FILE* f = std::fopen(path, "rb");
+  if (!f) std::abort();
+  char buffer[1 << 16];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;) t.text.append(buffer, n);
+  std::fclose(f);
+  t.text.append(16, '\0');
+  const std::string_view all(t.text.data(), t.text.size() - 16);
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= all.size(); ++i)
+    if (i == all.size() || all[i] == ' ' || all[i] == '\n') {
+      const std::string_view v = all.substr(start, i - start);
+      double d = 0.0;
+      if (!v.empty() && (v[0] == '-' || (v[0] >= '0' && v[0] <= '9')) && plainShortDecimal(v, d)) t.views.push_back(v);
+      start = i + 1;
+    }
+  return t;
+}
+
+// 1: every vertex line new; 8: each of 25 000 lines about eight times, in
+// random order; 0: the trace named by MPR_BENCH_TRACE.
 const Tokens& tokens(std::size_t repeat) {
   static const Tokens fresh = traceTokens(200000, 200000), repeated = traceTokens(200000, 25000);
+  if (repeat == 0) {
+    static const Tokens trace = std::getenv("MPR_BENCH_TRACE") ? fileTokens(std::getenv("MPR_BENCH_TRACE")) : fresh;
+    return trace;
+  }
   return repeat == 1 ? fresh : repeated;
 }
 
@@ -121,10 +151,11 @@ void BM_RecentDecimals(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * t.views.size()));
 }
 
-// Arg: 1, every vertex line new; 8, each distinct line eight times.
-BENCHMARK(BM_FromChars)->Arg(1)->Arg(8);
-BENCHMARK(BM_ShortDecimalAt)->Arg(1)->Arg(8);
-BENCHMARK(BM_RecentDecimals)->Arg(1)->Arg(8);
+// Arg: 1, every vertex line new; 8, each distinct line eight times; 0, the
+// trace MPR_BENCH_TRACE names (without it, as 1).
+BENCHMARK(BM_FromChars)->Arg(1)->Arg(8)->Arg(0);
+BENCHMARK(BM_ShortDecimalAt)->Arg(1)->Arg(8)->Arg(0);
+BENCHMARK(BM_RecentDecimals)->Arg(1)->Arg(8)->Arg(0);
 
 }  // namespace
 }  // namespace mpr
