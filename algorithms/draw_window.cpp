@@ -2,7 +2,7 @@
 // pseudo-code is quoted in each pass label (after " | ") so the stepper and
 // the trace show which line a pass runs.
 //
-// Decisions the paper leaves open (README, "The 1994 algorithm"):
+// Decisions the paper leaves open (docs/explanation/draw-window.md):
 // - Mirror depth: after draw_face marks a face's pixels with ZERO, those
 //   pixels get depth = far and the clear colour (a quad at the far plane,
 //   depth ALWAYS, under the stencil mask), so the virtual scene behind the
@@ -212,7 +212,7 @@ class WindowRenderer {
   // level drawn alone on a cleared colour buffer and added with 1/S, the sum
   // returned; alpha (destination alpha of the faces) is masked throughout.
   // The light is drawn from its centre in every level: the images method
-  // lights each sample from its own position (README, "Soft shadows").
+  // lights each sample from its own position (docs/explanation/accumulation-effects.md).
   void darkness_levels(const ViewCamera& cam, const PointLight& light, int levels) {
     const std::string n = std::to_string(levels);
     pass("accumulate", "darkness levels | glAccum(GL_LOAD, 1)  // the image so far");

@@ -41,7 +41,7 @@ struct ConformOptions {
 };
 
 // Mesa 22.3's known departures from GL 1.1 that MPR can emulate, by the
-// name of their reproducer (README, "Known Mesa departures").
+// name of their reproducer (docs/explanation/mesa.md).
 struct EmulatedDeparture {
   const char* name;
   unsigned bits;
@@ -301,7 +301,7 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   c->footer(
       "Both run the script with the mesa profile (RGBA8, depth 24, stencil 8, accumulation 4x16).\n"
       "Every @snapshot and the final buffers are compared: per buffer the identical pixels, the\n"
-      "largest difference and the verdict against the bounds in the README. Exit status 0 when\n"
+      "largest difference and the verdict against the bounds (docs/reference/commands/conform.md). Exit status 0 when\n"
       "the script conforms, 1 when it does not, 2 for a bad script or no Mesa.");
   c->add_option("scripts", opts->scripts, "GL scripts to run");
   c->add_option("--random", opts->random, "also run N random scripts (seeded, dyadic coordinates)")
@@ -317,7 +317,7 @@ void addConformCommand(CLI::App& app, int& exitCode) {
   c->add_flag("-q,--quiet", opts->quiet, "print only scripts out of bounds and the table");
   c->add_flag("--strict", opts->strict, "known Mesa departures from GL 1.1 fail a script too");
   c->add_flag("--exact", opts->exact,
-              "hold every buffer to identical bytes on every pixel instead of the README's bounds");
+              "hold every buffer to identical bytes on every pixel instead of the documented bounds");
   c->add_option("--driver", opts->driver, "Mesa driver: llvmpipe (default) or softpipe")
       ->check(CLI::IsMember({"llvmpipe", "softpipe"}));
   addThreadsOption(*c, opts->threads);

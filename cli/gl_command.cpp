@@ -194,12 +194,12 @@ void addGlCommand(CLI::App& app, int& exitCode) {
   auto opts = std::make_shared<GlOptions>();
   CLI::App* gl = app.add_subcommand("gl", "Run a GL script (.gls) on the emulated pipeline");
   gl->footer(
-      "The script format is spec/gl-script.md: one OpenGL 1.x call per line, @framebuffer W H,\n"
+      "The script format is docs/reference/gl-script.md: one OpenGL 1.x call per line, @framebuffer W H,\n"
       "@profile NAME, @pass LABEL, @snapshot NAME. Script errors print FILE:LINE:COLUMN and exit\n"
       "with status 2 before anything is written. Calls GL rejects are reported as\n"
       "FILE:LINE: GL_INVALID_... in glX and the run goes on.\n"
       "Probes (@expect stencil|depth|color|accum X Y V..., ... all V..., ... rect X Y W H V...,\n"
-      "@expect-picture stencil X Y ... @end; docs/gl-script-directives.md) are evaluated where they\n"
+      "@expect-picture stencil X Y ... @end; docs/reference/gl-script-directives.md) are evaluated where they\n"
       "stand: the first that does not hold prints FILE:LINE: the probe: expected and found, and\n"
       "exits with status 1, writing nothing. mpr test runs scripts with probes as tests.\n"
       "With --dump DIR: color.npy depth.npy stencil.npy accum.npy color.png, and\n"

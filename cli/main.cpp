@@ -11,15 +11,17 @@
 #include "cli/conform_command.hpp"
 #include "cli/gl_command.hpp"
 #include "cli/info_command.hpp"
+#include "cli/process_policy.hpp"
 #include "cli/reference_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/step_command.hpp"
 #include "cli/test_command.hpp"
-#include "util/heap_reuse.hpp"
 #include "util/signal_cleanup.hpp"
 
 int main(int argc, char** argv) {
-  mpr::keepFreedHeapMemory();  // freed blocks reused, not faulted in again (util/heap_reuse.hpp)
+  // The executable's own process-wide tuning (heap reuse, helper threads
+  // giving way), which the libraries leave to their host: cli/process_policy.
+  mpr::cli::applyProcessPolicy();
   CLI::App app{
       "mpr: a bit-exact emulator of an Iris-era graphics pipeline (8 stencil bits, 48-bit\n"
       "accumulation, 24-bit depth) and the multi-pass rendering of Diefenbach & Badler."};

@@ -180,7 +180,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* c = app.add_subcommand("render", "Render a scene file (default: the embedded default scene)");
   c->footer(
-      "The scene format is docs/scene-format.md (mpr render --describe-format prints its schema).\n"
+      "The scene format is docs/reference/scene-format.md (mpr render --describe-format prints its schema).\n"
       "Scene errors print FILE:LINE:COLUMN, exit with status 2 and write nothing. The image is written\n"
       "through OpenImageIO (PNG, TIFF or EXR by extension) to a temporary name and renamed into place.\n"
       "The scene's expect: list (probes read after a pass whose label matches, or at the end) is checked\n"

@@ -239,12 +239,12 @@ void addTestCommand(CLI::App& app, int& exitCode) {
   CLI::App* c = app.add_subcommand("test", "Run GL scripts with probes (@expect) and scenes with expect: as tests");
   c->footer(
       "Runs every script (a folder: every .gls and .yaml under it, sorted), evaluates its @expect and\n"
-      "@expect-picture probes in order (docs/gl-script-directives.md) and prints one line per\n"
+      "@expect-picture probes in order (docs/reference/gl-script-directives.md) and prints one line per\n"
       "script: ok, or FAIL with the first probe that does not hold, the expected and found values,\n"
       "and the history of its first failing pixel up to the probe (as mpr step --pixel words it).\n"
       "Then 'N passed, N failed'. Exit status 0 when every script passes, 1 when one fails, 2 for a\n"
       "script error (every script is parsed first; nothing runs or is written then).\n"
-      "A scene (.yaml) runs as a test of its expect: list (docs/scene-format.md): one line per scene,\n"
+      "A scene (.yaml) runs as a test of its expect: list (docs/reference/scene-format.md): one line per scene,\n"
       "ok or FAIL with the first expectation that does not hold in the render's order, the pass it\n"
       "was read at and its pixel's history; an after: that matched no pass is a located error (exit 2).\n"
       "--junit FILE: JUnit XML, one testcase per script. --report DIR: a difference image per failing\n"

@@ -1,6 +1,6 @@
 #pragma once
 // Pixel-by-pixel comparison of MPR's buffers with Mesa's, per buffer, against
-// the project's conformance bounds (README, "Conformance").
+// the project's conformance bounds (docs/explanation/mesa.md).
 #include <array>
 #include <cstdint>
 #include <map>
@@ -18,7 +18,7 @@ struct PixelMismatch {
   std::string departure;         // the known Mesa departure that explains it, if one does
 };
 
-// A known departure of Mesa 22.3 from GL 1.1 (README, "Known Mesa
+// A known departure of Mesa 22.3 from GL 1.1 (docs/explanation/mesa.md, "Known Mesa
 // departures"): MPR's buffers with the departure emulated, or, where it
 // cannot be emulated, the colour of every pixel whose depth and stencil agree
 // is taken as explained (`colourWhereDepthAgrees`).

@@ -1,5 +1,5 @@
 // The random script families of `mpr conform --random N --family NAME`
-// (README, "mpr conform"): arbitrary float coordinates, perspective and
+// (docs/explanation/mesa.md): arbitrary float coordinates, perspective and
 // orthographic views, and per family one part of the pipeline stressed.
 #include <algorithm>
 #include <cmath>

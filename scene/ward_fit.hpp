@@ -1,7 +1,7 @@
 // The 1997 paper's eq. (6): Phong's cos(delta)^E fitted to the Gaussian of
 // Ward's isotropic BRDF (eq. 5) by a two-parameter chi-square fit,
 //   0.0398 (1.999 / alpha^2) rho_s cos(delta)^(1.999 / alpha^2).
-// A `roughness` alpha becomes this exponent and scale (scene_loader.cpp);
+// A `roughness` alpha becomes this exponent and scale (material_reader.cpp);
 // tests/scene/ward_fit_test.cpp repeats the fit and says what it reproduces.
 #pragma once
 

@@ -21,73 +21,19 @@
 #include "framebuffer/framebuffer.hpp"
 #include "framebuffer/profile.hpp"
 #include "pipeline/gl/gl_enums.hpp"
+#include "script/call_set.hpp"
 #include "script/probe_directives.hpp"
 #include "script/script_line.hpp"
 #include "script/recent_decimals.hpp"
 #include "script/recent_lines.hpp"
 #include "script/short_decimal.hpp"
 #include "script/script_text.hpp"
+#include "util/check.hpp"
 #include "util/spelling.hpp"
 
 namespace mpr {
 namespace {
 
-// The signatures are gl_calls.def's (pipeline/gl_call.hpp).
-struct CallSpec {
-  std::string_view name;
-  GLCall call;
-  std::string_view args;
-};
-
-constexpr CallSpec kCalls[] = {
-#define MPR_GL_CALL(Enum, method, cFunction, kinds, params, args) {#cFunction, GLCall::Enum, kinds},
-#include "pipeline/gl/gl_calls.def"
-};
-
-const CallSpec* findCall(std::string_view name) {
-  static const std::unordered_map<std::string_view, const CallSpec*> byName = [] {
-    std::unordered_map<std::string_view, const CallSpec*> m;
-    for (const CallSpec& c : kCalls) m.emplace(c.name, &c);
-    return m;
-  }();
-  const auto it = byName.find(name);
-  return it == byName.end() ? nullptr : it->second;
-}
-
-// a == b for a call's name: names of 8 to 16 characters (most calls) compare
-// as two 8-byte words each, the first 8 characters and the last 8, instead
-// of a call to memcmp for every line.
-bool sameName(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  if (a.size() < 8 || a.size() > 16) return a == b;
-  std::uint64_t a0, a1, b0, b1;
-  std::memcpy(&a0, a.data(), 8);
-  std::memcpy(&b0, b.data(), 8);
-  std::memcpy(&a1, a.data() + a.size() - 8, 8);
-  std::memcpy(&b1, b.data() + b.size() - 8, 8);
-  return ((a0 ^ b0) | (a1 ^ b1)) == 0;
-}
-
-// Capabilities and modes that GL accepts but the emulated Iris subset does not
-// implement: a script using them is outside the call set (a script error),
-// not a GL error, since real GL would act on them.
-const std::set<std::uint32_t>& unsupportedCapabilities() {
-  static const std::set<std::uint32_t> caps = {
-      GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
-      GL_TEXTURE_GEN_Q, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH,
-      GL_POLYGON_STIPPLE, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
-      GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP, GL_AUTO_NORMAL, GL_MAP1_VERTEX_3, GL_MAP2_VERTEX_3,
-      GL_RESCALE_NORMAL, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_3D,
-      GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_COLOR_SUM, GL_DEPTH_CLAMP, GL_STENCIL_TEST_TWO_SIDE_EXT,
-  };
-  return caps;
-}
-
-std::string closestCallName(std::string_view name) {
-  std::vector<std::string_view> names;
-  for (const CallSpec& c : kCalls) names.push_back(c.name);
-  return closestMatch(name, names, 4, true);
-}
 
 using Token = ScriptToken;
 
@@ -256,8 +202,14 @@ class Parser {
     while (lastPiece ? pos <= text.size() : pos < text.size()) {
       // A call line parsed before: its command again, unparsed (a call's
       // parse depends on its bytes alone once the header is read).
+      if constexpr (kCheckCaches) MPR_CHECK(!checkedLine_);  // the line checked last reached keep() below
       if (mode_ != Mode::Header && !picture_) {
-        if (const RecentLines::Entry* kept = recentLines_.find(text, pos)) {
+        const RecentLines::Entry* kept = recentLines_.find(text, pos);
+        if (kCheckCaches && kept) {
+          checkedLine_ = *kept;  // parsed all the same below, and compared
+          kept = nullptr;
+        }
+        if (kept) {
           pos += kept->size + 1;
           ++lineNo_;
           if (callSink_) {  // its parts as kept: no command made
@@ -377,7 +329,7 @@ class Parser {
           continue;
         }
         if (head.text == "@window_map") {
-          // docs/gl-script-directives.md: 9 numbers (column by column) or off.
+          // docs/reference/gl-script-directives.md: 9 numbers (column by column) or off.
           cmd.kind = ScriptCommand::Kind::WindowMap;
           if (toks.size() == 2 && toks[1].text == "off") {
             emit(script_, std::move(cmd));
@@ -466,15 +418,32 @@ class Parser {
           ++t;
         }
       }
-      checkSubset(*spec, cmd, toks, lineNo_);
+      checkCallSet(file_, *spec, cmd, toks, lineNo_);
       recentLines_.keep(cmd.call, cmd.args);
+      if constexpr (kCheckCaches) checkKeptLine(cmd);
       emitCall(cmd);
     }
     return false;
   }
 
+  // The cache-check build: a line RecentLines gave back, parsed again, is
+  // the same call with the same arguments, bit for bit.
+  void checkKeptLine(const ScriptCommand& cmd) {
+    if (!checkedLine_) return;
+    const RecentLines::Entry& kept = *checkedLine_;
+    MPR_CHECK(kept.call == cmd.call);
+    MPR_CHECK_EQ(std::size_t{kept.argCount}, cmd.args.size());
+    for (std::size_t i = 0; i < cmd.args.size(); ++i) {
+      MPR_CHECK(std::memcmp(&kept.args[i].number, &cmd.args[i].number, sizeof(double)) == 0);
+      MPR_CHECK_EQ(kept.args[i].bits, cmd.args[i].bits);
+      MPR_CHECK_EQ(kept.args[i].column, cmd.args[i].column);
+    }
+    checkedLine_.reset();
+  }
+
   // After the last piece: what only the whole script settles.
   Script finish() {
+    if constexpr (kCheckCaches) MPR_CHECK(!checkedLine_);
     if (picture_) fail(picture_->line, picture_->column, "@expect-picture without @end");
     if (outsideProbe_) throw *outsideProbe_;
     for (PendingProbe& pp : probes_) {
@@ -484,36 +453,6 @@ class Parser {
     return std::move(script_);
   }
 
-  // GL-valid arguments the Iris subset does not emulate are outside the call set.
-  void checkSubset(const CallSpec& spec, const ScriptCommand& cmd, const std::vector<Token>& toks, int line) const {
-    auto outside = [&](const ScriptArg& a, const std::string& what) {
-      // The argument as written: its token (a checking pass keeps no text).
-      std::string_view written;
-      for (const Token& t : toks)
-        if (t.column == a.column) written = t.text;
-      fail(line, a.column, std::string(written) + " is valid GL but outside the emulated call set (" + what + ")");
-    };
-    switch (spec.call) {
-      case GLCall::Enable:
-      case GLCall::Disable:
-        if (unsupportedCapabilities().count(cmd.args[0].bits)) outside(cmd.args[0], "see spec/gl-script.md for the capabilities");
-        break;
-      case GLCall::Begin:
-        switch (cmd.args[0].bits) {
-          case GL_POINTS: case GL_LINES: case GL_LINE_STRIP: case GL_LINE_LOOP:
-            outside(cmd.args[0], "only polygon primitives are emulated");
-        }
-        break;
-      case GLCall::MatrixMode:
-        if (cmd.args[0].bits == GL_TEXTURE) outside(cmd.args[0], "no texturing");
-        break;
-      case GLCall::LightModeli:
-      case GLCall::LightModelf:
-        if (cmd.args[0].bits == GL_LIGHT_MODEL_COLOR_CONTROL) outside(cmd.args[0], "no separate specular colour");
-        break;
-      default: break;
-    }
-  }
 
  private:
   // The command of the current call line, reset for `call` (its argument
@@ -571,6 +510,7 @@ class Parser {
   const char* pieceEnd_ = nullptr;  // the end of the piece parseLines reads (shortDecimalAt's limit)
   mutable RecentDecimals recentDecimals_;  // the numbers read last, by their bytes
   RecentLines recentLines_;                // the call lines parsed last, by their bytes
+  std::optional<RecentLines::Entry> checkedLine_;  // the cache-check build's kept line, being parsed
   Mode mode_ = Mode::Store;
   Sink sink_;
   ScriptCallSink callSink_;  // Stream: the calls as their parts (sink_ the rest), when set
@@ -595,38 +535,6 @@ std::size_t Script::callCount() const {
 
 // The number of values a `...v` call takes for its pname, or 0 when the pname
 // is not one the function takes (GL will reject it; any 1..4 values parse).
-int glVectorCount(GLCall call, std::uint32_t pname) {
-  switch (call) {
-    case GLCall::Lightfv:
-      switch (pname) {
-        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
-        case GL_SPOT_DIRECTION: return 3;
-        case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION:
-        case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: return 1;
-      }
-      return 0;
-    case GLCall::Materialfv:
-      switch (pname) {
-        case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_EMISSION: case GL_AMBIENT_AND_DIFFUSE: return 4;
-        case GL_COLOR_INDEXES: return 3;
-        case GL_SHININESS: return 1;
-      }
-      return 0;
-    case GLCall::Fogfv:
-      switch (pname) {
-        case GL_FOG_COLOR: return 4;
-        case GL_FOG_MODE: case GL_FOG_DENSITY: case GL_FOG_START: case GL_FOG_END: case GL_FOG_INDEX: return 1;
-      }
-      return 0;
-    case GLCall::LightModelfv:
-      switch (pname) {
-        case GL_LIGHT_MODEL_AMBIENT: return 4;
-        case GL_LIGHT_MODEL_LOCAL_VIEWER: case GL_LIGHT_MODEL_TWO_SIDE: return 1;
-      }
-      return 0;
-    default: return 0;
-  }
-}
 
 std::size_t Script::probeCount() const {
   return static_cast<std::size_t>(std::count_if(commands.begin(), commands.end(), [](const ScriptCommand& c) {

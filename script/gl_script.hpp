@@ -58,8 +58,8 @@ struct ScriptCommand {
   std::vector<ScriptArg> args;
   std::string label;  // pass label or snapshot name
   std::shared_ptr<const ScriptProbe> probe;  // Probe only
-  // (A member added here is added to swapCommands, Batch::add and the
-  // unpacking in script_read_ahead.cpp too.)
+  // (script_read_ahead.cpp's swapCommands binds every member by name: a
+  // member added here does not compile there until the read-ahead carries it.)
 };
 
 struct Script {

@@ -2,6 +2,10 @@
 
 #include "script/short_decimal.hpp"
 
+#include <cstring>
+
+#include "util/check.hpp"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -25,6 +29,11 @@ bool RecentDecimals::read(std::string_view t, const char* limit, double& value) 
   Entry& e = entries_[hash >> (64 - kSlotBits)];
   if (e.size == n && e.low == low && e.high == high) {
     value = e.value;
+    if constexpr (kCheckCaches) {
+      double fresh = 0.0;
+      MPR_CHECK(shortDecimalAt(t, limit, fresh));
+      MPR_CHECK(std::memcmp(&fresh, &value, sizeof(double)) == 0);
+    }
     return true;
   }
   if (!shortDecimalAt(t, limit, value)) return false;

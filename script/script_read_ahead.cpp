@@ -24,9 +24,8 @@ namespace {
 
 // Commands per hand-over: the first batch small, so the calls start soon
 // and a short script touches little memory, each next one twice the one
-// before up to the last size (a lock per two thousand commands: on the
-// bathroom trace batches of 1 024 took 0.67 s, of 2 048 or 4 096 0.61 s,
-// the waits for a batch or for room fewer).
+// before up to the last size (a lock per two thousand commands: fewer
+// waits for a batch or for room; docs, "Measurements behind the code").
 constexpr std::size_t kFirstBatchCommands = 256;
 constexpr std::size_t kBatchCommands = 2048;
 constexpr std::size_t kBatchesInFlight = 16;  // parsed ahead at most: some thirty thousand commands
@@ -39,20 +38,25 @@ constexpr std::size_t kPrefetchSlots = 32;
 // The reader refills the batch the caller handed back longest ago, and only
 // once more than this many wait: its lines have left the calling core's
 // cache by then, so writing them does not wait for that core to give them
-// up (bathroom trace, 15 interleaved runs: 0.66 -> 0.62 s).
+// up.
 constexpr std::size_t kSpareAge = 6;
 
 // std::swap by member: the vectors, string and pointer trade their buffers
 // (std::swap's three moves copied a short label's bytes each time).
+// Every member is bound by name: a member added to ScriptCommand fails to
+// compile here until it travels too (and with it Batch::add's packing and
+// the unpacking below, which carry the same members: kind, line, call and
+// args packed; label and probe whole).
 void swapCommands(ScriptCommand& a, ScriptCommand& b) {
-  std::swap(a.kind, b.kind);
-  std::swap(a.line, b.line);
-  std::swap(a.call, b.call);
-  a.args.swap(b.args);
+  auto& [kind, line, call, args, label, probe] = a;
+  std::swap(kind, b.kind);
+  std::swap(line, b.line);
+  std::swap(call, b.call);
+  args.swap(b.args);
   // A call has no label or probe: both empty, nothing to trade (a string's
   // swap is a dozen branches on its short-string buffer).
-  if (!a.label.empty() || !b.label.empty()) a.label.swap(b.label);
-  if (a.probe || b.probe) a.probe.swap(b.probe);
+  if (!label.empty() || !b.label.empty()) label.swap(b.label);
+  if (probe || b.probe) probe.swap(b.probe);
 }
 
 // A batch holds its commands packed one after another in slots of a
@@ -64,7 +68,7 @@ void swapCommands(ScriptCommand& a, ScriptCommand& b) {
 // none the caller's cache holds but the batch's own: slots of ScriptCommand swapped to and fro,
 // their argument vectors written by one core and read by the other, made
 // every line of a command cross twice, and the reader ran twice as long on
-// two cores as on one (0.47 against 0.22 s of CPU on the bathroom trace).
+// two cores as on one.
 // A command with a label or a probe (directives) goes whole, in `whole`.
 struct PackedHeader {
   std::int32_t line;
@@ -81,7 +85,7 @@ constexpr std::uint16_t kWhole = 0xffff;
 // vector's storage, static_assert below): the batch's lines were last
 // read on the calling core, and a plain store first fetched each back from
 // there (a copy of a vertex's words was a quarter of the reader's time on
-// the bathroom trace; its CPU time over 15 interleaved runs 0.70 -> 0.64 s). handOver's fence orders
+// the bathroom trace). handOver's fence orders
 // these stores before the batch is handed on. (GCC's vector types may
 // alias any object: the slot's bytes are written as a ScriptArg's.)
 static_assert(__STDCPP_DEFAULT_NEW_ALIGNMENT__ >= 16);
@@ -194,8 +198,8 @@ void streamScriptAhead(ScriptText& text, const Script& header, const std::functi
         }
       };
       // The calls packed from their parts: no command made for them (the
-      // making and copying of a command per call line: 42 M of the reader's
-      // 300 M instructions on the first 20 MB of the bathroom trace).
+      // making and copying of a command per call line was a seventh of the
+      // reader's instructions).
       streamScript(
           text, header,
           [&](ScriptCommand&& c) {

@@ -48,3 +48,15 @@ std::string checkOperands(const A& a, const B& b) {
 #define MPR_DCHECK_EQ(a, b) MPR_CHECK_EQ(a, b)
 #define MPR_DCHECK_LT(a, b) MPR_CHECK_LT(a, b)
 #endif
+
+namespace mpr {
+// The cache-check build (-DMPR_CHECK_CACHES=ON, the sanitizer build's mode):
+// every hit of a cache that stands in for a pure function (RecentLines,
+// RecentDecimals, RecentResults) computes the uncached result as well and
+// checks that the bytes agree. A cache is only a speed-up when that holds.
+#if defined(MPR_CHECK_CACHES)
+inline constexpr bool kCheckCaches = true;
+#else
+inline constexpr bool kCheckCaches = false;
+#endif
+}  // namespace mpr

@@ -14,6 +14,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "util/check.hpp"
+
 namespace mpr {
 
 template <typename Key, typename Value, std::size_t kSlots>
@@ -35,7 +37,14 @@ class RecentResults {
   const Value& get(const Key& key, Compute&& compute) {
     if (slots_.empty()) slots_.resize(kSlots);  // the table only where it is used
     Slot& s = slots_[slotOf(key)];
-    if (s.generation == generation_ && std::memcmp(&s.key, &key, sizeof(Key)) == 0) return s.value;
+    if (s.generation == generation_ && std::memcmp(&s.key, &key, sizeof(Key)) == 0) {
+      if constexpr (kCheckCaches) {
+        static_assert(std::is_trivially_copyable_v<Value>, "compared by its bytes");
+        const Value fresh = compute(key);
+        MPR_CHECK(std::memcmp(&fresh, &s.value, sizeof(Value)) == 0);
+      }
+      return s.value;
+    }
     s.value = compute(key);
     s.key = key;
     s.generation = generation_;

@@ -49,7 +49,7 @@ void RowQueue::wait() {
 }
 
 void RowQueue::work(int phase) {
-  markHelperThread();  // the calling thread goes first on a shared core
+  markHelperThread();  // gives way to the calling thread where the process asks it to
   const std::size_t k = static_cast<std::size_t>(phase);
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {

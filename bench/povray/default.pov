@@ -1,7 +1,7 @@
 // scenes/default.yaml (MPR's default scene: a room with a mirror, a glass
 // pane, a cube, a sphere and one light) transcribed by hand into POV-Ray 3.7
 // SDL, for scripts/reference-vs-povray (the speed comparison of
-// `mpr reference` with POV-Ray in the README).
+// `mpr reference` with POV-Ray in docs/explanation/accuracy.md).
 //
 // Render (what the script runs; File_Gamma=1.0 writes linear values, as MPR does):
 //   povray +W640 +H480 +WT2 -D +A0.0 +AM1 +R4 File_Gamma=1.0 \

@@ -52,7 +52,7 @@ TEST(StencilIntersection, WholeWindowAsAPicture) {
       1  1  1  1  1  1  .  .)"));
 }
 
-// The README's example, from outside the tree with the one include.
+// The documentation's example (docs/reference/cpp-api.md), from outside the tree with the one include.
 TEST(StencilReadme, ReplaceInsideTheSquare) {
   mpr::GLContext gl(16, 16, mpr::indigoProfile());
   gl.enable(GL_STENCIL_TEST);

@@ -43,7 +43,7 @@ struct LightingState {
   std::array<LightSource, kMaxLights> lights;
   LightModel model;
   std::array<Material, 2> material;  // [0] front, [1] back
-  // Emulates Mesa 22.3's fixed-function program (`mpr conform` only, README
+  // Emulates Mesa 22.3's fixed-function program (`mpr conform` only, docs/explanation/mesa.md,
   // "Known Mesa departures", shininess0_attenuated): with every shininess 0
   // (material_shininess_is_zero) its dot products are all N.VP, so for a light
   // with a spot cutoff or a positional light with attenuation (ffvertex_prog.c

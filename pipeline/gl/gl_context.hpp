@@ -36,7 +36,7 @@ using GLenumValue = std::uint32_t;
 
 // Where Mesa 22.3 departs from GL 1.1 the emulated Iris follows GL 1.1; `mpr
 // conform` replays a script once more with a departure emulated to tell
-// which differences it explains (README, "Known Mesa departures"). Never set
+// which differences it explains (docs/explanation/mesa.md). Never set
 // by a renderer.
 enum MesaDeparture : unsigned {
   kColor3KeepsAlpha = 1u << 0,         // glColor3 keeps the alpha of an earlier glColor4 (color3_alpha.gls)

@@ -213,7 +213,7 @@ void expectSameImage(const HardScene& h, const char* transform, const Scene& cha
                                       " pixels changed by more than 1");
 }
 
-// Two combinations do not hold yet (README, "Reliability", open): they run
+// Two combinations do not hold yet (docs/dev/reliability.md, open): they run
 // in OpenFindings below, disabled until fixed.
 bool isOpenFinding(const HardScene& h, const std::string& transform) {
   return (std::string(h.name) == "shadowed box before a mirror" && transform == "translated by 1e4") ||

@@ -1,4 +1,4 @@
-# Expectations in scenes (expect:, docs/scene-format.md) under `mpr render`
+# Expectations in scenes (expect:, docs/reference/scene-format.md) under `mpr render`
 # and `mpr test`: the scenes of tests/scene_probes/pass hold, every scene of
 # tests/scene_probes/fail fails with the exact report in its .expected file
 # (standard error less the timing line), the render's files are written all

@@ -1,4 +1,4 @@
-# A whole render replayed on Mesa llvmpipe (README, "mpr conform", whole
+# A whole render replayed on Mesa llvmpipe (docs/explanation/mesa.md, whole
 # renders): renders SCENE at WIDTH x HEIGHT with --trace and holds the trace
 # to the conformance bounds with `mpr conform --quiet` (exit status 1 when a
 # buffer is out of bounds, 2 when there is no Mesa).

@@ -13,7 +13,8 @@
 #include "scene/mesh_loader.hpp"
 #include "scene/off_reader.hpp"
 
-namespace mpr {
+// A namespace of its own: the suite is compiled in batches (unity builds).
+namespace mpr::off_reader_test {
 namespace {
 
 using namespace std::string_literals;
@@ -163,4 +164,4 @@ TEST(OffReader, RefusesMalformedFilesWithLineAndColumn) {
 }
 
 }  // namespace
-}  // namespace mpr
+}  // namespace mpr::off_reader_test

@@ -14,7 +14,8 @@
 #include "scene/mesh_loader.hpp"
 #include "scene/ply_reader.hpp"
 
-namespace mpr {
+// A namespace of its own: the suite is compiled in batches (unity builds).
+namespace mpr::ply_reader_test {
 namespace {
 
 std::string errorOf(const std::string& bytes) {
@@ -162,4 +163,4 @@ TEST(PlyReader, RefusesMalformedFilesWithLineAndColumn) {
 }
 
 }  // namespace
-}  // namespace mpr
+}  // namespace mpr::ply_reader_test

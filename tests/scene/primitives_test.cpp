@@ -9,7 +9,8 @@
 
 #include "scene/scene_loader.hpp"
 
-namespace mpr {
+// A namespace of its own: the suite is compiled in batches (unity builds).
+namespace mpr::primitives_test {
 namespace {
 
 Vec3 geometricNormal(const Mesh& m, const std::array<std::uint32_t, 3>& t) {
@@ -77,4 +78,4 @@ TEST(Primitives, TheLoaderSubdividesBoxesAndQuads) {
 }
 
 }  // namespace
-}  // namespace mpr
+}  // namespace mpr::primitives_test

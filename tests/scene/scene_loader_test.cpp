@@ -9,7 +9,8 @@
 
 #include "scene/scene_loader.hpp"
 
-namespace mpr {
+// A namespace of its own: the suite is compiled in batches (unity builds).
+namespace mpr::scene_loader_test {
 namespace {
 
 std::string errorOf(const std::string& text) {
@@ -344,4 +345,4 @@ TEST(SceneLoader, DefaultSceneLoadsAndDescribeNamesEveryKey) {
 }
 
 }  // namespace
-}  // namespace mpr
+}  // namespace mpr::scene_loader_test

@@ -9,7 +9,8 @@
 
 #include "scene/scene_loader.hpp"
 
-namespace mpr {
+// A namespace of its own: the suite is compiled in batches (unity builds).
+namespace mpr::tessellation_test {
 namespace {
 
 const char* kRoom = R"(
@@ -104,4 +105,4 @@ TEST(Tessellation, PastTheSceneBudgetIsALocatedError) {
 }
 
 }  // namespace
-}  // namespace mpr
+}  // namespace mpr::tessellation_test

@@ -25,7 +25,8 @@
 
 #include "scene/scene_loader.hpp"
 
-namespace mpr {
+// A namespace of its own: the suite is compiled in batches (unity builds).
+namespace mpr::ward_fit_test {
 namespace {
 
 struct Sample {
@@ -148,4 +149,4 @@ TEST(WardFit, RoughnessBecomesTheFittedPhongTerm) {
 }
 
 }  // namespace
-}  // namespace mpr
+}  // namespace mpr::ward_fit_test

@@ -16,8 +16,8 @@ namespace mpr {
 namespace {
 namespace fs = std::filesystem;
 
-struct TempDir : testing::TempFolder {
-  TempDir() : TempFolder("mpr-atomic") {}
+struct AtomicFileFolder : testing::TempFolder {
+  AtomicFileFolder() : TempFolder("mpr-atomic") {}
 };
 
 std::string contents(const fs::path& p) {
@@ -30,14 +30,14 @@ std::string contents(const fs::path& p) {
 std::size_t entries(const fs::path& dir) { return testing::TempFolder::entryCount(dir); }
 
 TEST(AtomicFile, WritesAndLeavesNoTemporary) {
-  TempDir d;
+  AtomicFileFolder d;
   writeFileAtomically((d.path / "a.txt").string(), "hello");
   EXPECT_EQ(contents(d.path / "a.txt"), "hello");
   EXPECT_EQ(entries(d.path), 1u);
 }
 
 TEST(AtomicFile, NoNameExistsUntilTheFileIsCompleteThenAFreshHiddenOne) {
-  TempDir d;
+  AtomicFileFolder d;
   AtomicFile f((d.path / "img.png").string());
   f.write("bytes");
   // While it is written the file has no name another process could swap.
@@ -62,7 +62,7 @@ TEST(AtomicFile, NoNameExistsUntilTheFileIsCompleteThenAFreshHiddenOne) {
 // "other process" replaces every name in the folder with such a link after
 // the file is created: the writer still reaches this object's own file.
 TEST(AtomicFile, AWriterThatOpensByNameReachesItsOwnFileWhateverTheFolderHolds) {
-  TempDir d;
+  AtomicFileFolder d;
   fs::create_directory(d.path / "out");
   std::ofstream(d.path / "victim") << "victim";
   AtomicFile f((d.path / "out" / "img.tif").string());
@@ -78,7 +78,7 @@ TEST(AtomicFile, AWriterThatOpensByNameReachesItsOwnFileWhateverTheFolderHolds) 
 }
 
 TEST(AtomicFile, ATemporaryNameReplacedBeforeTheRenameIsRefused) {
-  TempDir d;
+  AtomicFileFolder d;
   std::ofstream(d.path / "victim") << "victim";
   AtomicFile f((d.path / "out.txt").string());
   f.write("new");
@@ -94,7 +94,7 @@ TEST(AtomicFile, ATemporaryNameReplacedBeforeTheRenameIsRefused) {
 TEST(AtomicFile, TheFolderIsHeldFromTheStart) {
   // The target's folder renamed away and a link put in its place mid-write:
   // the file lands in the folder that was opened, not through the link.
-  TempDir d;
+  AtomicFileFolder d;
   fs::create_directory(d.path / "out");
   fs::create_directory(d.path / "elsewhere");
   AtomicFile f((d.path / "out" / "a.txt").string());
@@ -107,7 +107,7 @@ TEST(AtomicFile, TheFolderIsHeldFromTheStart) {
 }
 
 TEST(AtomicFile, ALinkAtTheTargetIsReplacedNotFollowed) {
-  TempDir d;
+  AtomicFileFolder d;
   std::ofstream(d.path / "victim") << "victim";
   fs::create_symlink(d.path / "victim", d.path / "out.txt");
   writeFileAtomically((d.path / "out.txt").string(), "new");
@@ -117,7 +117,7 @@ TEST(AtomicFile, ALinkAtTheTargetIsReplacedNotFollowed) {
 }
 
 TEST(AtomicFile, UncommittedLeavesTheOldFileAndRemovesTheTemporary) {
-  TempDir d;
+  AtomicFileFolder d;
   std::ofstream(d.path / "out.txt") << "old";
   {
     AtomicFile f((d.path / "out.txt").string());
@@ -128,7 +128,7 @@ TEST(AtomicFile, UncommittedLeavesTheOldFileAndRemovesTheTemporary) {
 }
 
 TEST(AtomicFile, AGroupIsReplacedWholeOrNotAtAll) {
-  TempDir d;
+  AtomicFileFolder d;
   std::ofstream(d.path / "a") << "old a";
   // The second name is too long for the file system: the first is not replaced.
   const std::string tooLong = (d.path / std::string(300, 'x')).string();
@@ -141,7 +141,7 @@ TEST(AtomicFile, AGroupIsReplacedWholeOrNotAtAll) {
 }
 
 TEST(AtomicFile, AMissingFolderIsAnError) {
-  TempDir d;
+  AtomicFileFolder d;
   try {
     writeFileAtomically((d.path / "no" / "a").string(), "x");
     FAIL() << "no exception";
@@ -151,7 +151,7 @@ TEST(AtomicFile, AMissingFolderIsAnError) {
 }
 
 TEST(OutputFileProblem, NamesWhatCannotBeWritten) {
-  TempDir d;
+  AtomicFileFolder d;
   std::ofstream(d.path / "file") << "x";
   EXPECT_EQ(outputFileProblem((d.path / "new.png").string()), "");
   EXPECT_EQ(outputFileProblem((d.path / "sub" / "new.png").string()), "");
@@ -162,7 +162,7 @@ TEST(OutputFileProblem, NamesWhatCannotBeWritten) {
 }
 
 TEST(OutputReplacesInput, ByTheFilesIdentityNotItsSpelling) {
-  TempDir d;
+  AtomicFileFolder d;
   std::ofstream(d.path / "scene.yaml") << "s";
   fs::create_directory(d.path / "sub");
   fs::create_directory_symlink(d.path / "sub", d.path / "via");
@@ -184,7 +184,7 @@ TEST(OutputReplacesInput, ByTheFilesIdentityNotItsSpelling) {
 }
 
 TEST(SameOutputFile, SeesThroughSpellingsAndLinks) {
-  TempDir d;
+  AtomicFileFolder d;
   const std::string a = (d.path / "a.png").string();
   EXPECT_TRUE(sameOutputFile(a, (d.path / "." / "a.png").string()));
   EXPECT_FALSE(sameOutputFile(a, (d.path / "b.png").string()));

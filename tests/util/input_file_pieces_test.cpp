@@ -22,8 +22,8 @@ namespace mpr {
 namespace {
 namespace fs = std::filesystem;
 
-struct TempDir : testing::TempFolder {
-  TempDir() : TempFolder("mpr-pieces") {}
+struct PiecesFolder : testing::TempFolder {
+  PiecesFolder() : TempFolder("mpr-pieces") {}
 };
 
 void writeFile(const fs::path& p, const std::string& bytes) {
@@ -62,7 +62,7 @@ std::string joined(const std::vector<std::string>& pieces) {
 }
 
 TEST(InputFilePieces, ThePiecesAreTheFilesWholeLinesAndRewindReadsThemAgain) {
-  TempDir d;
+  PiecesFolder d;
   std::mt19937 rng(20261205);
   std::string longLine(10000, 'l');
   longLine.append("\nend");
@@ -107,7 +107,7 @@ std::string messageOf(const auto& f) {
 }
 
 TEST(InputFilePieces, RefusesWhatReadInputFileRefusesWithItsMessage) {
-  TempDir d;
+  PiecesFolder d;
   writeFile(d.path / "big", std::string(100, 'x'));
   for (const std::string& path : {(d.path / "missing").string(), d.path.string(), std::string("/dev/zero"),
                                  (d.path / "big").string()}) {
@@ -118,7 +118,7 @@ TEST(InputFilePieces, RefusesWhatReadInputFileRefusesWithItsMessage) {
 }
 
 TEST(InputFilePieces, AFileThatGrowsPastTheLimitWhileReadIsRefused) {
-  TempDir d;
+  PiecesFolder d;
   const fs::path p = d.path / "growing";
   std::string text;
   for (int i = 0; i < 8; ++i) text += "line " + std::to_string(i) + "\n";  // 56 bytes

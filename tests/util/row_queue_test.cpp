@@ -2,7 +2,8 @@
 // thread, with its phase, in the order pushed on each thread; push returns
 // before the task has run; wait() waits for all of it and throws what a task
 // threw; more than kCapacity tasks in flight make push wait instead of
-// queueing without bound; its threads give way to the calling thread.
+// queueing without bound; its threads give way to the calling thread where
+// the process asks for it, and only there.
 #include "util/row_queue.hpp"
 
 #include <gtest/gtest.h>
@@ -93,10 +94,37 @@ TEST(RowQueue, DestructionRunsWhatIsQueued) {
   EXPECT_EQ(ran.load(), 200);
 }
 
-// The queue's threads are helpers (markHelperThread): on Linux they run
-// under SCHED_BATCH, the calling thread as it was.
-TEST(RowQueue, ItsThreadsGiveWayToTheCallingThread) {
+// The helper-thread policy (util/helper_thread) set for a test and put back
+// after it: a process policy, and in the sanitizer build every test of the
+// binary runs in one process.
+class HelperPolicy {
+ public:
+  explicit HelperPolicy(bool giveWay) : before_(helperThreadsGiveWay()) { setHelperThreadsGiveWay(giveWay); }
+  ~HelperPolicy() { setHelperThreadsGiveWay(before_); }
+  HelperPolicy(const HelperPolicy&) = delete;
+  HelperPolicy& operator=(const HelperPolicy&) = delete;
+
+ private:
+  bool before_;
+};
+
 #if defined(__linux__)
+// The scheduling policy of each of a fresh queue's threads.
+std::vector<int> queueThreadPolicies(int threads) {
+  RowQueue queue(threads);
+  std::vector<int> policies(static_cast<std::size_t>(threads), -1);
+  queue.push([&](int k) { policies[static_cast<std::size_t>(k)] = sched_getscheduler(0); });
+  queue.wait();
+  return policies;
+}
+#endif
+
+// With the process policy on (the mpr executable turns it on at start-up,
+// cli/process_policy), the queue's threads are helpers: on Linux they run
+// under SCHED_BATCH, the calling thread as it was.
+TEST(RowQueue, ItsThreadsGiveWayToTheCallingThreadWhereTheProcessAsks) {
+#if defined(__linux__)
+  const HelperPolicy on(true);
   int marked = -1;
   std::thread probe([&] {
     markHelperThread();
@@ -105,11 +133,7 @@ TEST(RowQueue, ItsThreadsGiveWayToTheCallingThread) {
   probe.join();
   if (marked != SCHED_BATCH) GTEST_SKIP() << "this system refuses SCHED_BATCH";
   const int caller = sched_getscheduler(0);
-  RowQueue queue(3);
-  std::vector<int> policies(3, -1);
-  queue.push([&](int k) { policies[static_cast<std::size_t>(k)] = sched_getscheduler(0); });
-  queue.wait();
-  for (int p : policies) EXPECT_EQ(p, SCHED_BATCH);
+  for (int p : queueThreadPolicies(3)) EXPECT_EQ(p, SCHED_BATCH);
   EXPECT_EQ(sched_getscheduler(0), caller);
   EXPECT_NE(caller, SCHED_BATCH);
 #else
@@ -117,7 +141,28 @@ TEST(RowQueue, ItsThreadsGiveWayToTheCallingThread) {
 #endif
 }
 
-TEST(RowQueue, HardwareThreadsIsAtLeastOne) { EXPECT_GE(hardwareThreads(), 1); }
+// A library user's process (the policy as the library leaves it): the
+// queue's threads are scheduled as the thread that started them.
+TEST(RowQueue, ByDefaultItsThreadsAreScheduledAsTheCallingThread) {
+  EXPECT_FALSE(helperThreadsGiveWay());
+#if defined(__linux__)
+  const int caller = sched_getscheduler(0);
+  ASSERT_NE(caller, SCHED_BATCH) << "the test runs under SCHED_BATCH: it cannot tell a marked thread from an unmarked one";
+  for (int p : queueThreadPolicies(3)) EXPECT_EQ(p, caller);
+  // Turned on and off again: threads started after that are as before.
+  {
+    const HelperPolicy on(true);
+  }
+  for (int p : queueThreadPolicies(2)) EXPECT_EQ(p, caller);
+#endif
+}
+
+// The default of --threads: the hardware's threads as the C++ library
+// reports them, or 1 where it cannot tell (it reports 0).
+TEST(RowQueue, HardwareThreadsAreTheReportedCountOrOne) {
+  const unsigned reported = std::thread::hardware_concurrency();
+  EXPECT_EQ(hardwareThreads(), reported == 0 ? 1 : static_cast<int>(reported));
+}
 
 }  // namespace
 }  // namespace mpr

@@ -19,11 +19,9 @@ namespace mpr {
 namespace {
 namespace fs = std::filesystem;
 
-struct TempDir : testing::TempFolder {
-  TempDir() : TempFolder("mpr-signal") {}
+struct SignalFolder : testing::TempFolder {
+  SignalFolder() : TempFolder("mpr-signal") {}
 };
-
-std::size_t entries(const fs::path& dir) { return testing::TempFolder::entryCount(dir); }
 
 // Runs `body` in a child process with the handler installed; returns the
 // signal that ended the child (0 when it exited).
@@ -42,7 +40,7 @@ int endedBySignal(Body body) {
 
 TEST(SignalCleanup, AnInterruptedWriteLeavesNoTemporaryAndTheOldFile) {
   for (const int sig : {SIGINT, SIGTERM}) {
-    TempDir d;
+    SignalFolder d;
     std::ofstream(d.path / "out.png") << "old";
     const int ended = endedBySignal([&] {
       AtomicFile f((d.path / "out.png").string());
@@ -51,7 +49,7 @@ TEST(SignalCleanup, AnInterruptedWriteLeavesNoTemporaryAndTheOldFile) {
       std::raise(sig);
     });
     EXPECT_EQ(ended, sig);
-    EXPECT_EQ(entries(d.path), 1u) << "signal " << sig;
+    EXPECT_EQ(testing::TempFolder::entryCount(d.path), 1u) << "signal " << sig;
     std::ifstream in(d.path / "out.png");
     std::string text;
     in >> text;
@@ -60,7 +58,7 @@ TEST(SignalCleanup, AnInterruptedWriteLeavesNoTemporaryAndTheOldFile) {
 }
 
 TEST(SignalCleanup, AHalfMadeFolderIsRemovedWithItsFiles) {
-  TempDir d;
+  SignalFolder d;
   const int ended = endedBySignal([&] {
     const int parent = ::open(d.path.c_str(), O_RDONLY | O_DIRECTORY);
     fs::create_directory(d.path / ".page.new-1");
@@ -70,11 +68,11 @@ TEST(SignalCleanup, AHalfMadeFolderIsRemovedWithItsFiles) {
     std::raise(SIGTERM);
   });
   EXPECT_EQ(ended, SIGTERM);
-  EXPECT_EQ(entries(d.path), 0u);
+  EXPECT_EQ(testing::TempFolder::entryCount(d.path), 0u);
 }
 
 TEST(SignalCleanup, ADeregisteredNameIsLeftAlone) {
-  TempDir d;
+  SignalFolder d;
   const int ended = endedBySignal([&] {
     const int parent = ::open(d.path.c_str(), O_RDONLY | O_DIRECTORY);
     std::ofstream(d.path / "kept") << "k";

@@ -1,5 +1,6 @@
-// The README's example under "Per-pixel tests in C++", compiled so that it
-// cannot go wrong again: keep the body of the test below and the README's
+// The documentation's example under "Per-pixel tests in C++"
+// (docs/reference/cpp-api.md), compiled so that it
+// cannot go wrong again: keep the body of the test below and the page's
 // code block the same, line for line.
 //
 // A 16x16 window under identity matrices: NDC -0.5 .. 0.5 is window 4 .. 12
@@ -19,8 +20,8 @@
 namespace mpr {
 namespace {
 
-TEST(ReadmeExample, PerPixelTestsInCpp) {
-  // --- the README's code block ---
+TEST(DocsExample, PerPixelTestsInCpp) {
+  // --- the documentation's code block ---
   mpr::GLContext gl(16, 16, mpr::indigoProfile());
   gl.enable(GL_STENCIL_TEST);
   gl.stencilFunc(GL_ALWAYS, 129, 0xFF);
@@ -32,12 +33,12 @@ TEST(ReadmeExample, PerPixelTestsInCpp) {
       .  129  129
       .  129  129
       .    .    *)"), "");
-  // --- end of the README's code block ---
+  // --- end of the documentation's code block ---
 }
 
 // The same picture one pixel off (the example as it first stood, at (2,2)
 // with 129 at (3,3)) does not hold: the comparison is not vacuous.
-TEST(ReadmeExample, AWrongPictureIsReported) {
+TEST(DocsExample, AWrongPictureIsReported) {
   mpr::GLContext gl(16, 16, mpr::indigoProfile());
   gl.enable(GL_STENCIL_TEST);
   gl.stencilFunc(GL_ALWAYS, 129, 0xFF);
@@ -56,22 +57,22 @@ std::string fileText(const std::string& path) {
   return ss.str();
 }
 
-// The code block of the first test, unindented, is the README's block
+// The code block of the first test, unindented, is the documentation's block
 // under "Per-pixel tests in C++", byte for byte.
-TEST(ReadmeExample, TheReadmeShowsThisCode) {
-  const std::string self = fileText(std::string(MPR_SOURCE_DIR) + "/tests/pipeline/readme_example_test.cpp");
-  const std::string begin = "  // --- the README's code block ---\n", end = "  // --- end of the README's code block ---";
+TEST(DocsExample, ThePageShowsThisCode) {
+  const std::string self = fileText(std::string(MPR_SOURCE_DIR) + "/tests/pipeline/docs_example_test.cpp");
+  const std::string begin = "  // --- the documentation's code block ---\n", end = "  // --- end of the documentation's code block ---";
   const std::size_t from = self.find(begin), to = self.find(end);
   ASSERT_NE(from, std::string::npos);
   ASSERT_NE(to, std::string::npos);
   std::string block;
   std::istringstream lines(self.substr(from + begin.size(), to - from - begin.size()));
   for (std::string line; std::getline(lines, line);) block += (line.rfind("  ", 0) == 0 ? line.substr(2) : line) + "\n";
-  const std::string readme = fileText(std::string(MPR_SOURCE_DIR) + "/README.md");
-  const std::size_t section = readme.find("## Per-pixel tests in C++");
+  const std::string page = fileText(std::string(MPR_SOURCE_DIR) + "/docs/reference/cpp-api.md");
+  const std::size_t section = page.find("## Per-pixel tests in C++");
   ASSERT_NE(section, std::string::npos);
-  EXPECT_NE(readme.find("```cpp\n" + block + "```\n", section), std::string::npos)
-      << "README.md's example differs from this test's:\n" << block;
+  EXPECT_NE(page.find("```cpp\n" + block + "```\n", section), std::string::npos)
+      << "docs/reference/cpp-api.md's example differs from this test's:\n" << block;
 }
 
 }  // namespace

@@ -1,0 +1,40 @@
+#pragma once
+// The readers of a scene file's sections, one file each (render_settings_,
+// camera_, light_, material_, object_ and expectation_reader.cpp), called
+// in this order by loadSceneText (scene/scene_loader.hpp): a section may
+// depend on those read before it (objects on materials, expectations on the
+// render settings and lights). Each reads through a SceneNodeReader, which
+// places its errors, and adds what it read to the scene.
+#include <yaml-cpp/yaml.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "scene/scene_node_reader.hpp"
+
+namespace mpr {
+
+// render: image size, recursion, effects, hardware profile.
+void readRenderSettings(const SceneNodeReader& in, const YAML::Node& n, RenderSettings& r);
+// camera: the viewer.
+void readCamera(const SceneNodeReader& in, const YAML::Node& n, Camera& c);
+// lights: point lights (at most kMaxSceneLights).
+void readLights(const SceneNodeReader& in, const YAML::Node& list, std::vector<PointLight>& lights);
+// materials: named materials, appended to `materials`; gives each name's index there.
+std::map<std::string, int> readMaterials(const SceneNodeReader& in, const YAML::Node& map,
+                                         std::vector<SceneMaterial>& materials);
+// objects: primitives and meshes (at most kMaxSceneObjects, kMaxSceneTriangles
+// in all), placed and given their materials (`materials`: readMaterials' index).
+// `confine`: meshes only from inside the scene's folder (mpr render --confine).
+void readObjects(const SceneNodeReader& in, const YAML::Node& list, const std::map<std::string, int>& materials,
+                 bool confine, Scene& s);
+// What the render settings ask of the scene read so far: the triangles
+// render.tessellation makes, the stencil levels the recursion needs,
+// darkness_levels' stencil counts and accumulation buffer.
+void checkRenderLimits(const SceneNodeReader& in, const YAML::Node& doc, const Scene& s);
+// expect: probes of the buffers at named points of the render.
+void readExpectations(const SceneNodeReader& in, const YAML::Node& list, Scene& s);
+
+}  // namespace mpr
