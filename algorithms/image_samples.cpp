@@ -1,12 +1,12 @@
 #include "algorithms/image_samples.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <cmath>
 
 namespace mpr {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 double radicalInverse(int base, int i) {
   double inv = 1.0 / base, f = inv, r = 0.0;
@@ -20,8 +20,8 @@ DVec2 concentricDisc(DVec2 u) {
   const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
   if (a == 0.0 && b == 0.0) return DVec2(0.0);
   double r, phi;
-  if (std::abs(a) > std::abs(b)) r = a, phi = kPi / 4.0 * (b / a);
-  else r = b, phi = kPi / 2.0 - kPi / 4.0 * (a / b);
+  if (std::abs(a) > std::abs(b)) r = a, phi = std::numbers::pi / 4.0 * (b / a);
+  else r = b, phi = std::numbers::pi / 2.0 - std::numbers::pi / 4.0 * (a / b);
   return r * DVec2(std::cos(phi), std::sin(phi));
 }
 
@@ -60,7 +60,7 @@ DVec2 frostedShear(double m, int samples, int i) {
   if (samples <= 1 || !(m > 0.0)) return DVec2(0.0);
   const DVec2 u = tablePoint(i % samples, samples, 5);
   // Box-Muller: u.x in (0, 1) (the table's cells are centred), a normal pair.
-  const double r = std::sqrt(-2.0 * std::log(u.x)), a = 2.0 * kPi * u.y;
+  const double r = std::sqrt(-2.0 * std::log(u.x)), a = 2.0 * std::numbers::pi * u.y;
   return m * r * DVec2(std::cos(a), std::sin(a));
 }
 

@@ -1,5 +1,6 @@
 #include "algorithms/shadow_volume.hpp"
 
+#include <numbers>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,7 +8,6 @@
 namespace mpr {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Relative tolerance of the conservative contact tests: far above double
 // rounding of the inputs' arithmetic, far below anything a pixel resolves.
 constexpr double kContactTolerance = 1e-9;
@@ -165,7 +165,7 @@ double shadowVolumeWinding(const ShadowVolume& volume, Vec3 pF) {
   double sum = 0.0;
   for (const VolumeTriangle& t : volume.triangles())
     sum += solidAngle(DVec3(t[0]) - p, DVec3(t[1]) - p, DVec3(t[2]) - p);
-  return sum / (4.0 * kPi);
+  return sum / (4.0 * std::numbers::pi);
 }
 
 bool pointInsideShadowVolume(const ShadowVolume& volume, Vec3 p) {
@@ -191,7 +191,7 @@ std::array<Vec3, 4> nearPlaneCorners(Vec3 eyeF, Vec3 lookAtF, Vec3 upF, double f
     s = unit(glm::cross(f, std::fabs(f.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0)));
   const DVec3 u = glm::cross(s, f);
   // gluPerspective: the near rectangle's half height is near * tan(fovY / 2).
-  const double h = zNear * std::tan(fovYDegrees * kPi / 360.0), w = h * aspect;
+  const double h = zNear * std::tan(fovYDegrees * std::numbers::pi / 360.0), w = h * aspect;
   const DVec3 c = eye + f * zNear;
   return {Vec3(c - s * w - u * h), Vec3(c + s * w - u * h), Vec3(c + s * w + u * h), Vec3(c - s * w + u * h)};
 }

@@ -10,7 +10,7 @@ namespace {
 constexpr int kBins = 16;
 constexpr std::uint32_t kLeafSize = 4;
 // The traversal stack holds at most one entry per level plus one.
-constexpr int kMaxDepth = 60;
+constexpr int kMaxTreeDepth = 60;
 
 struct Box {
   DVec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
@@ -43,7 +43,7 @@ struct Builder {
     Box bounds, centreBounds;
     for (std::uint32_t i = first; i < first + count; ++i) bounds.grow(boxes[order[i]]), centreBounds.grow(centres[order[i]]);
     nodes[index].lo = bounds.lo, nodes[index].hi = bounds.hi;
-    if (count <= kLeafSize || depth >= kMaxDepth) return leaf(index, first, count);
+    if (count <= kLeafSize || depth >= kMaxTreeDepth) return leaf(index, first, count);
     // Binned SAH (Wald 2007): the cheapest of kBins - 1 planes per axis.
     double bestCost = std::numeric_limits<double>::infinity();
     int bestAxis = -1, bestSplit = 0;

@@ -5,22 +5,18 @@
 #include <cmath>
 
 #include "reference/shading.hpp"
+#include "reference/path_limits.hpp"
 #include "reference/snell.hpp"
 #include "scene/slab_refraction.hpp"
 
 namespace mpr {
 namespace {
 
-constexpr double kMinWeight = 1.0 / 512.0;
 constexpr int kMaxChainFaces = 8;
-// Shadow segments leave out this much at either end (scene units): the
-// points lie on triangles, and the scene's coordinates are floats (~1e-7
-// relative).
-constexpr double kEpsilon = 1e-6;
 
 bool anyVertexOnSide(const SpecularFace& of, const SpecularFace& plane, double sign) {
   for (const DVec3& v : of.polygon)
-    if (sign * plane.side(v) > kEpsilon) return true;
+    if (sign * plane.side(v) > kSurfaceEpsilon) return true;
   return false;
 }
 
@@ -42,7 +38,7 @@ struct ChainSearch {
       const bool refracts = !face.mirror();
       const double w = chain.weight * face.weight;
       if (f == prev || (refracts && chain.refracting >= 0)) continue;  // a plane cannot pass light to itself
-      if (static_cast<int>(chain.faces.size()) >= maxFaces || !(w > 0.0) || (weightRule && w < kMinWeight)) continue;
+      if (static_cast<int>(chain.faces.size()) >= maxFaces || !(w > 0.0) || (weightRule && w < kMinPathWeight)) continue;
       if (prev >= 0) {
         const SpecularFace& p = faces[static_cast<std::size_t>(prev)];
         if (leave != 0.0 && !anyVertexOnSide(face, p, leave)) continue;
@@ -76,7 +72,7 @@ bool unfold(const LightPaths& lp, const FaceChain& chain, int begin, int end, in
   for (int k = begin; k != end; k += step) {
     const SpecularFace& face = lp.faces[static_cast<std::size_t>(chain.faces[static_cast<std::size_t>(k)])];
     DVec3 x;
-    if (!(face.side(from) > kEpsilon) || !face.crossing(from, target, x) || !face.contains(x)) return false;
+    if (!(face.side(from) > kSurfaceEpsilon) || !face.crossing(from, target, x) || !face.contains(x)) return false;
     out.push(x);
     from = x;
     target = face.reflect(target);
@@ -134,7 +130,7 @@ bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, d
   const DVec3 pImage = reflectThrough(lp, chain, n - 1, j, -1, p);
   const DVec3 sImage = discPoint(reflectThrough(lp, chain, 0, j, 1, c), r, disc, face.centre);
   // A point on the face itself (its own lit colour) gets no light through it.
-  if (!(std::fabs(face.side(pImage)) > kEpsilon) || !(std::fabs(face.side(sImage)) > kEpsilon)) return false;
+  if (!(std::fabs(face.side(pImage)) > kSurfaceEpsilon) || !(std::fabs(face.side(sImage)) > kSurfaceEpsilon)) return false;
   if (face.thickness > 0.0) {
     // A slab (in-out refraction): the light enters at x and goes on parallel
     // to itself from x + shift (no spreading: every ray is shifted alike to
@@ -187,9 +183,9 @@ LightPaths findLightPaths(const Scene& scene, int bounces) {
 bool blocked(const Bvh& bvh, DVec3 a, DVec3 b, std::uint64_t& shadowRays) {
   const DVec3 d = b - a;
   const double len = glm::length(d);
-  if (!(len > 2.0 * kEpsilon)) return false;
+  if (!(len > 2.0 * kSurfaceEpsilon)) return false;
   ++shadowRays;
-  return bvh.occluded(Ray{a, d / len}, kEpsilon, len - kEpsilon);
+  return bvh.occluded(Ray{a, d / len}, kSurfaceEpsilon, len - kSurfaceEpsilon);
 }
 
 DVec3 directLight(const Scene& scene, const Bvh& bvh, const LightPaths& lp, const ShadingPoint& at,

@@ -5,19 +5,17 @@
 #include <limits>
 
 #include "reference/shading.hpp"
+#include "reference/path_limits.hpp"
 #include "reference/snell.hpp"
 #include "scene/slab_refraction.hpp"
 
 namespace mpr {
 namespace {
 
-constexpr double kMinWeight = 1.0 / 512.0;
 // With bounces < 0 the specular recursion stops where its weight falls below
 // 1/512, or after this many faces (two facing mirrors of reflectance 0.92
 // need 75 to get there; the pipeline's recursion_depth stops far earlier).
-constexpr int kMaxDepth = 100;
-// Secondary rays start this far from the surface they leave (scene units).
-constexpr double kEpsilon = 1e-6;
+constexpr int kMaxSpecularDepth = 100;
 
 DVec3 reflectAbout(DVec3 d, DVec3 n) { return d - 2.0 * glm::dot(d, n) * n; }
 
@@ -60,12 +58,12 @@ Traced trace(const TraceContext& c, const Ray& ray, double tMin, double tMax, in
   // pipeline's finishFace does: lit * (1 - t) + through * t (1994 paper,
   // "Object attributes and translucency").
   const double t = m.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
-  const bool deeper = c.bounces < 0 ? (depth < kMaxDepth && weight * t >= kMinWeight) : depth < c.bounces;
+  const bool deeper = c.bounces < 0 ? (depth < kMaxSpecularDepth && weight * t >= kMinPathWeight) : depth < c.bounces;
   if (!deeper || !(t > 0.0)) return {local * (1.0 - t), h.t};
   DVec3 through(0.0);
   const auto follow = [&](DVec3 dir, DVec3 from) {
     ++counts.specular;
-    return trace(c, Ray{from, dir}, kEpsilon, std::numeric_limits<double>::infinity(), depth + 1, weight * t, sampler,
+    return trace(c, Ray{from, dir}, kSurfaceEpsilon, std::numeric_limits<double>::infinity(), depth + 1, weight * t, sampler,
                  sample, counts);
   };
   if (m.kind == MaterialKind::Mirror) {

@@ -69,7 +69,7 @@ TEST(AccumulationWords, MixedImagesReturnTheirMeanWithinOne) {
 // Looking straight down from 8 (fov 40, 64 x 48: a pixel is 0.1213 wide,
 // image right = +x, window x = x / 0.1213 + 31.5 on the row through z = 0,
 // window y 23.5) at a 1 x 1 block 1 above the floor, lit from (3, 4, 0).
-const char* kScene = R"(
+const char* kAccumulationScene = R"(
 camera: {position: [0, 8, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 40, near: 0.1, far: 30}
 ambient: [0.1, 0.1, 0.1]
 lights: [{position: [3, 4, 0], radius: 0.6, attenuation: [1, 0, 0]}]
@@ -83,7 +83,7 @@ render: {width: 64, height: 48, soft_shadow_samples: 16}
 // Table points: stratified offsets within half a pixel, distinct; nothing
 // moves with one image.
 TEST(ImageSamples, TheTablesAreStratifiedAndFixed) {
-  Scene s = loadSceneText(kScene, "s.yaml", {"render.antialias_samples=4"});
+  Scene s = loadSceneText(kAccumulationScene, "s.yaml", {"render.antialias_samples=4"});
   std::set<double> xs;
   for (int i = 0; i < 4; ++i) {
     const ViewSample v = viewSample(s, i, 4);
@@ -103,7 +103,7 @@ TEST(ImageSamples, TheTablesAreStratifiedAndFixed) {
 // middle (the bounding box's centre, (0, 0.55, 0)): within 0.6 of the light,
 // at right angles to the direction from it to the middle.
 TEST(ImageSamples, LightSamplesLieOnTheLightsDisc) {
-  const Scene s = loadSceneText(kScene, "s.yaml");
+  const Scene s = loadSceneText(kAccumulationScene, "s.yaml");
   const DVec3 light(3, 4, 0), axis = glm::normalize(DVec3(0, 0.55, 0) - light);
   std::set<std::pair<float, float>> seen;
   for (int i = 0; i < 16; ++i) {
@@ -127,7 +127,7 @@ TEST(ImageSamples, LightSamplesLieOnTheLightsDisc) {
 // 20.4: 20) in the umbra, then rises monotonically over several pixels to
 // the lit floor. With one sample the same walk meets one hard step.
 TEST(SoftShadows, ThePenumbraRisesMonotonically) {
-  const Scene s = loadSceneText(kScene, "s.yaml");
+  const Scene s = loadSceneText(kAccumulationScene, "s.yaml");
   GLContext gl(s.render.width, s.render.height, indigoProfile());
   GLCommandStream stream(gl, false);
   const RenderResult r = renderScene(s, stream);
@@ -144,7 +144,7 @@ TEST(SoftShadows, ThePenumbraRisesMonotonically) {
     rises += gl.colorAt(x, y)[0] > gl.colorAt(x + 1, y)[0];
   }
   EXPECT_GE(rises, 3);  // a ramp over several pixels, not one hard step
-  const Scene hard = loadSceneText(kScene, "s.yaml", {"render.soft_shadow_samples=1"});
+  const Scene hard = loadSceneText(kAccumulationScene, "s.yaml", {"render.soft_shadow_samples=1"});
   GLContext g1(64, 48, indigoProfile());
   GLCommandStream s1(g1, false);
   renderScene(hard, s1);
@@ -159,7 +159,7 @@ TEST(SoftShadows, ThePenumbraRisesMonotonically) {
 // by less than the rounding), and somewhere along the block's silhouette
 // against the floor a pixel takes a value strictly between the two.
 TEST(Antialiasing, EdgesBlendInteriorsStay) {
-  std::string sharp = kScene;
+  std::string sharp = kAccumulationScene;
   sharp.replace(sharp.find("radius: 0.6"), 11, "radius: 0.0");
   const Scene one = loadSceneText(sharp, "s.yaml");
   const Scene eight = loadSceneText(sharp, "s.yaml", {"render.antialias_samples=8"});

@@ -31,7 +31,7 @@ namespace {
 //   sample 1: x in [-1.742, 2.258], z in [-2.966, 1.034]
 // (every edge at least 0.2 pixel from a pixel centre). The box's own top
 // covers the four pixels at x, z = +-0.5, lit from both samples.
-const char* kScene = R"(
+const char* kDarknessScene = R"(
 camera: {position: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 43.60281897270362, near: 1, far: 30}
 ambient: [0.1, 0.1, 0.1]
 lights: [{position: [0, 4, 0], radius: 2, attenuation: [1, 0, 0]}]
@@ -94,7 +94,7 @@ Captured renderCapturing(const Scene& s, GLContext& gl) {
 }
 
 TEST(DarknessLevels, StencilPicturesOfTheLevelsSteppedDown) {
-  const Scene s = loadSceneText(kScene, "s.yaml");
+  const Scene s = loadSceneText(kDarknessScene, "s.yaml");
   EXPECT_NEAR(lightSamplePosition(s, s.lights[0], 0).x, 0.7071, 1e-4);
   EXPECT_NEAR(lightSamplePosition(s, s.lights[0], 0).z, -0.7071, 1e-4);
   EXPECT_NEAR(lightSamplePosition(s, s.lights[0], 1).x, -0.2588, 1e-4);
@@ -123,8 +123,8 @@ TEST(DarknessLevels, StencilPicturesOfTheLevelsSteppedDown) {
 // q on black, exactly the hard image less the ambient, each added as a word
 // truncated by less than 1/32767 (accumulation_effects_test.cpp): 0.5 + 0.02.
 TEST(DarknessLevels, AgainstImages) {
-  const Scene levels = loadSceneText(kScene, "s.yaml");
-  const Scene images = loadSceneText(kScene, "s.yaml", {"render.soft_shadow_method=images"});
+  const Scene levels = loadSceneText(kDarknessScene, "s.yaml");
+  const Scene images = loadSceneText(kDarknessScene, "s.yaml", {"render.soft_shadow_method=images"});
   GLContext gl(12, 8, indigoProfile()), gi(12, 8, indigoProfile());
   const Captured c = renderCapturing(levels, gl);
   // The images method: per image, where its make_all_shadows counted a volume.
@@ -145,7 +145,7 @@ TEST(DarknessLevels, AgainstImages) {
           << "pixel " << x << ", " << 7 - y;
     }
   // The light alone from its centre, no shadows: lit_c = that image less the ambient.
-  std::string hard = kScene, unlit = kScene;
+  std::string hard = kDarknessScene, unlit = kDarknessScene;
   hard.replace(hard.find("radius: 2"), 9, "radius: 0");
   unlit.replace(unlit.find("radius: 2"), 9, "radius: 0, color: [0, 0, 0]");
   const Scene centre = loadSceneText(hard, "s.yaml", {"render.shadows=false"});
@@ -188,13 +188,13 @@ TEST(DarknessLevels, AgainstImages) {
 // scenes/soft_shadows.yaml: the floor under the table, where its top's and
 // legs' shadows overlap, comes out up to 65 of 255 darker than images.
 TEST(DarknessLevels, OverlappingCastersCountTwice) {
-  std::string twice = kScene;
+  std::string twice = kDarknessScene;
   const std::string box = "  - {name: box, primitive: box, translate: [0, 1.9, 0], scale: [2, 0.2, 2], material: grey}\n";
   twice.insert(twice.find(box) + box.size(),
                "  - {name: lower box, primitive: box, translate: [0, 1.2, 0], scale: [2, 0.2, 2], material: grey}\n");
   const Scene levels = loadSceneText(twice, "s.yaml");
   const Scene images = loadSceneText(twice, "s.yaml", {"render.soft_shadow_method=images"});
-  const Scene once = loadSceneText(kScene, "s.yaml", {"render.soft_shadow_method=images"});
+  const Scene once = loadSceneText(kDarknessScene, "s.yaml", {"render.soft_shadow_method=images"});
   GLContext gl(12, 8, indigoProfile()), gi(12, 8, indigoProfile()), go(12, 8, indigoProfile());
   const Captured c = renderCapturing(levels, gl);
   const std::vector<std::string> counts = {
@@ -262,7 +262,7 @@ render: {width: 64, height: 48, soft_shadow_samples: 16, soft_shadow_method: dar
 // throughout), and the planner predicts the passes of a mirror scene's
 // views: S lit passes for the soft light only where shadows are drawn.
 TEST(DarknessLevels, PredictedWithMirrors) {
-  std::string scene = kScene;
+  std::string scene = kDarknessScene;
   const std::string materials = "materials: {grey: {diffuse: [0.8, 0.8, 0.8]}}", objects = "objects:\n";
   scene.replace(scene.find(materials), materials.size(),
                 "materials: {grey: {diffuse: [0.8, 0.8, 0.8]}, m: {kind: mirror, reflectance: 0.8}}");

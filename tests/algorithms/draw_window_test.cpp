@@ -37,7 +37,7 @@
 namespace mpr {
 namespace {
 
-constexpr const char* kScene = R"(
+constexpr const char* kDrawWindowScene = R"(
 camera: {position: [0, 0, 0], look_at: [0, 0, -1], up: [0, 1, 0], fov: 90, near: 0.1, far: 20}
 ambient: [0.2, 0.2, 0.2]
 lights:
@@ -116,7 +116,7 @@ struct Step {
 
 // The stencil (and every other buffer) at the end of each pass, by label.
 std::vector<std::pair<std::string, Framebuffer>> renderCanonical() {
-  const Scene scene = loadSceneText(kScene, "canonical.yaml");
+  const Scene scene = loadSceneText(kDrawWindowScene, "canonical.yaml");
   GLContext gl(16, 16, indigoProfile());
   GLCommandStream stream(gl, false);
   std::vector<std::pair<std::string, Framebuffer>> seen;

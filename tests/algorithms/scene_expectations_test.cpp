@@ -50,7 +50,7 @@ TEST(SceneExpectations, PassLabelsByTextLevelAndLight) {
   EXPECT_FALSE(passMatches(entry("end"), "accumulate | image 1 of 2: glAccum(GL_ACCUM, 1/2) blend"));
 }
 
-constexpr const char* kScene = R"(
+constexpr const char* kExpectationsScene = R"(
 camera: {position: [0, 0, 0], look_at: [0, 0, -1], up: [0, 1, 0], fov: 90, near: 0.1, far: 20}
 lights:
   - {position: [-2, 0, -3]}
@@ -67,7 +67,7 @@ expect:
 )";
 
 Scene sceneFor(const std::string& profile) {
-  std::string text = kScene;
+  std::string text = kExpectationsScene;
   text.replace(text.find("PROFILE"), 7, profile);
   return loadSceneText(text, "e.yaml");
 }
@@ -89,7 +89,7 @@ TEST(SceneExpectations, StencilLevelsAreTheAlgorithmsForEveryProfile) {
 }
 
 TEST(SceneExpectations, TheWatcherReadsThePassItNames) {
-  Scene s = loadSceneText(std::string(kScene).replace(std::string(kScene).find("PROFILE"), 7, "indigo") +
+  Scene s = loadSceneText(std::string(kExpectationsScene).replace(std::string(kExpectationsScene).find("PROFILE"), 7, "indigo") +
                               "  - {after: \"draw_all_shadows > shadow volumes\", light: 0, stencil: [4, 7], value: SHAD_ZERO + 1}\n"
                               "  - {after: \"back to ZERO\", stencil: all, value: ZERO}\n",
                           "e.yaml");

@@ -78,7 +78,7 @@ TEST(ShadowPivot, APivotedVolumeIsTheJitteredVolumeWhileTheSilhouetteStays) {
 // 2 whose two samples both stay above the box's top, so both see the same
 // silhouette: the pivot's images are the images method's, byte for byte,
 // with the volumes built once.
-const char* kScene = R"(
+const char* kPivotScene = R"(
 camera: {position: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 43.60281897270362, near: 1, far: 30}
 ambient: [0.1, 0.1, 0.1]
 lights: [{position: [0, 4, 0], radius: 2, attenuation: [1, 0, 0]}]
@@ -90,8 +90,8 @@ render: {width: 12, height: 8, soft_shadow_samples: 2, soft_shadow_method: pivot
 )";
 
 TEST(ShadowPivot, EqualsImagesWhereTheSilhouetteStays) {
-  const Scene pivot = loadSceneText(kScene, "s.yaml");
-  const Scene images = loadSceneText(kScene, "s.yaml", {"render.soft_shadow_method=images"});
+  const Scene pivot = loadSceneText(kPivotScene, "s.yaml");
+  const Scene images = loadSceneText(kPivotScene, "s.yaml", {"render.soft_shadow_method=images"});
   GLContext gp(12, 8, indigoProfile()), gi(12, 8, indigoProfile());
   GLCommandStream sp(gp, false), si(gi, false);
   const RenderResult rp = renderScene(pivot, sp), ri = renderScene(images, si);
