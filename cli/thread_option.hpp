@@ -1,7 +1,7 @@
 #pragma once
 // --threads for the commands that draw through the emulated pipeline (gl,
 // render, step, conform): with more than one, that many threads draw the
-// framebuffer's rows behind the calls (GLContext::setThreads, drawDeferred),
+// framebuffer's rows behind the calls (DrawStage::setThreads, drawDeferred),
 // `mpr gl` parses its script ahead on a thread of its own
 // (streamScriptAhead); the bytes are the same at any count.
 #include <CLI/CLI.hpp>

@@ -85,7 +85,7 @@ struct TriangleShading {
 };
 
 // A triangle Mesa's draw module clips, drawn as llvmpipe's fan of it
-// (GLContext::rasterizeLlvmpipeFan): depth and colour from the planes of
+// (DrawStage::rasterizeLlvmpipeFan): depth and colour from the planes of
 // the fan triangle, set up on the vertices draw's clipper made.
 struct FanShading {
   bool depth = false;  // llvmpipe's plane of the fan triangle (a0, dzdx, dzdy)

@@ -1,6 +1,7 @@
 // GLContext: construction, errors, framebuffer state, clears, per-fragment
 // state and accumulation. Transform, lighting and drawing live in their own
-// files (gl_context_transform.cpp, gl_context_lighting.cpp, gl_context_draw.cpp).
+// files (gl_context_transform.cpp, gl_context_lighting.cpp, gl_context_draw.cpp);
+// drawing below glEnd is the draw stage's (pipeline/draw/draw_stage.hpp).
 #include "pipeline/gl/gl_context.hpp"
 
 #include <GL/gl.h>
@@ -67,7 +68,7 @@ float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
 }  // namespace
 
 GLContext::GLContext(int width, int height, const HardwareProfile& profile)
-    : fb_(width, height, profile),
+    : draw_(width, height, profile),
       cullMode_(GL_BACK),
       frontFace_(GL_CCW),
       modelview_(32),
@@ -78,16 +79,16 @@ GLContext::GLContext(int width, int height, const HardwareProfile& profile)
   viewport(0, 0, width, height);
   scissorBox_ = {0, 0, width, height};
   setterValues_.scissor = {0, 0, width, height};
-  clearValues_.depth = quadClearDepth_ = fb_.profile().depthMax();
+  clearValues_.depth = quadClearDepth_ = fb().profile().depthMax();
   // GL's initial masks are all ones; held at the stencil width.
-  frag_.stencil.valueMask = frag_.stencil.writeMask = fb_.profile().stencilMax();
+  frag_.stencil.valueMask = frag_.stencil.writeMask = fb().profile().stencilMax();
   lighting_.lights[0].diffuse = Vec4(1, 1, 1, 1);
   lighting_.lights[0].specular = Vec4(1, 1, 1, 1);
 }
 
 std::array<std::int16_t, 4> GLContext::accumAt(int x, int y) const {
   settle();
-  const std::int16_t* a = fb_.accum(x, y);
+  const std::int16_t* a = fb().accum(x, y);
   return {a[0], a[1], a[2], a[3]};
 }
 
@@ -111,7 +112,7 @@ bool GLContext::checkOutsideBeginEnd() {
 }
 
 PixelRect GLContext::drawRegion() const {
-  PixelRect r = viewportBox_.intersect(fb_.bounds());
+  PixelRect r = viewportBox_.intersect(fb().bounds());
   if (scissorEnabled_) r = r.intersect(scissorBox_);
   return r;
 }
@@ -162,18 +163,18 @@ void GLContext::clearDepth(double d) {
   if (!checkOutsideBeginEnd()) return;
   d = std::isnan(d) ? 0.0 : std::clamp(d, 0.0, 1.0);
   // util_pack_z: round to nearest, 1.0 exactly to the maximum.
-  clearValues_.depth = static_cast<std::uint32_t>(std::nearbyint(d * fb_.profile().depthMax()));
+  clearValues_.depth = static_cast<std::uint32_t>(std::nearbyint(d * fb().profile().depthMax()));
   // A clear Mesa draws as a quad (clearByQuad) carries the depth as a vertex:
   // st_cb_clear.c clear_with_quad's z = Depth.Clear * 2 - 1 (in double, then
   // a float), cso_set_viewport_dims' z * 0.5 + 0.5, stored as a fragment's
   // depth is (clear_by_quad.gls).
   const float z = static_cast<float>(d * 2.0f - 1.0f);
-  quadClearDepth_ = windowDepthToWord(std::fma(z, 0.5f, 0.5f), static_cast<float>(fb_.profile().depthMax()));
+  quadClearDepth_ = windowDepthToWord(std::fma(z, 0.5f, 0.5f), static_cast<float>(fb().profile().depthMax()));
 }
 
 void GLContext::clearStencil(int s) {
   if (!checkOutsideBeginEnd()) return;
-  clearValues_.stencil = static_cast<std::uint32_t>(s) & fb_.profile().stencilMax();
+  clearValues_.stencil = static_cast<std::uint32_t>(s) & fb().profile().stencilMax();
 }
 
 void GLContext::clearAccum(float r, float g, float b, float a) {
@@ -197,12 +198,12 @@ void GLContext::clear(std::uint32_t mask) {
   which.depth = mask & GL_DEPTH_BUFFER_BIT;
   which.stencil = mask & GL_STENCIL_BUFFER_BIT;
   which.accum = mask & GL_ACCUM_BUFFER_BIT;
-  const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
+  const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb().bounds()) : fb().bounds();
   const ClearMasks masks{frag_.colorMask, frag_.depth.writeMask, frag_.stencil.writeMask};
   ClearValues values = clearValues_;
   if (which.depth && clearByQuad(which)) values.depth = quadClearDepth_;
-  forRowBlocks(region, [this, which, values, masks](const PixelRect& rows) {
-    clearBuffers(fb_, rows, which, values, masks);
+  draw_.forRowBlocks(region, [which, values, masks](Framebuffer& fb, const PixelRect& rows) {
+    clearBuffers(fb, rows, which, values, masks);
   });
 }
 
@@ -214,8 +215,8 @@ void GLContext::clear(std::uint32_t mask) {
 bool GLContext::clearByQuad(const ClearBuffers& which) const {
   if (!frag_.depth.writeMask) return false;
   const auto& s = setterValues_.scissor;
-  const bool scissorQuad = scissorEnabled_ && (s[0] > 0 || s[1] > 0 || std::int64_t{s[0]} + s[2] < fb_.width() ||
-                                               std::int64_t{s[1]} + s[3] < fb_.height());
+  const bool scissorQuad = scissorEnabled_ && (s[0] > 0 || s[1] > 0 || std::int64_t{s[0]} + s[2] < fb().width() ||
+                                               std::int64_t{s[1]} + s[3] < fb().height());
   const std::uint32_t stencilMask = frag_.stencil.writeMask & 0xFF;
   const bool stencilQuad = which.stencil && stencilMask != 0 && (scissorQuad || stencilMask != 0xFF);
   return scissorQuad || stencilQuad;
@@ -237,7 +238,7 @@ void GLContext::stencilMask(std::uint32_t mask) {
   if (!checkOutsideBeginEnd()) return;
   if (!changing(setterValues_.stencilWriteMask == mask)) return;
   setterValues_.stencilWriteMask = mask;
-  frag_.stencil.writeMask = mask & fb_.profile().stencilMax();
+  frag_.stencil.writeMask = mask & fb().profile().stencilMax();
 }
 
 // --- per-fragment state ----------------------------------------------------------
@@ -302,8 +303,8 @@ void GLContext::stencilFunc(GLenumValue func, int ref, std::uint32_t mask) {
   setterValues_.stencilValueMask = mask;
   frag_.stencil.func = *f;
   // GL: "ref is clamped to the range [0, 2^s - 1]".
-  frag_.stencil.ref = static_cast<std::uint32_t>(std::clamp<int>(ref, 0, fb_.profile().stencilMax()));
-  frag_.stencil.valueMask = mask & fb_.profile().stencilMax();
+  frag_.stencil.ref = static_cast<std::uint32_t>(std::clamp<int>(ref, 0, fb().profile().stencilMax()));
+  frag_.stencil.valueMask = mask & fb().profile().stencilMax();
 }
 
 void GLContext::stencilOp(GLenumValue sfail, GLenumValue dpfail, GLenumValue dppass) {
@@ -453,22 +454,9 @@ void GLContext::accum(GLenumValue op, float value) {
   flushVertices();
   analyseMatrices(true, true);  // _mesa_Accum validates the state
   // Accumulation works on the scissored window, like a clear.
-  const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb_.bounds()) : fb_.bounds();
-  forRowBlocks(region, [this, a, value, mask = frag_.colorMask](const PixelRect& rows) {
-    accumulate(fb_, rows, a, value, mask);
-  });
-}
-
-void GLContext::forRowBlocks(const PixelRect& region, std::function<void(const PixelRect&)> work) {
-  if (!rowQueue) return work(region);
-  if (region.empty()) return;
-  // Every pixel's result depends on that pixel alone: row thread k takes
-  // the rows y with y mod n == k, the rows it draws (drawDeferred), so the
-  // pixel's clears, draws and accumulations stay in the order of the calls.
-  const int n = rowQueue->threads();
-  rowQueue->push([region, work = std::move(work), n](int k) {
-    for (int y = region.y0 + ((k - region.y0) % n + n) % n; y < region.y1; y += n)
-      work(PixelRect{region.x0, y, region.x1, y + 1});
+  const PixelRect region = scissorEnabled_ ? scissorBox_.intersect(fb().bounds()) : fb().bounds();
+  draw_.forRowBlocks(region, [a, value, mask = frag_.colorMask](Framebuffer& fb, const PixelRect& rows) {
+    accumulate(fb, rows, a, value, mask);
   });
 }
 

@@ -20,21 +20,19 @@
 #include "framebuffer/fragment_pipeline.hpp"
 #include "framebuffer/framebuffer.hpp"
 #include "pipeline/draw/clipping.hpp"
-#include "raster/fog.hpp"
+#include "pipeline/draw/draw_snapshot.hpp"
+#include "pipeline/draw/draw_stage.hpp"
 #include "pipeline/draw/lighting.hpp"
-#include "pipeline/gl/matrix_stack.hpp"
 #include "pipeline/draw/primitive_assembly.hpp"
-#include "raster/span_shading.hpp"
-#include "util/vecmath.hpp"
+#include "pipeline/draw/vertex_processing.hpp"
+#include "pipeline/gl/matrix_stack.hpp"
+#include "raster/fog.hpp"
 #include "util/recent_results.hpp"
-#include "util/row_queue.hpp"
-#include "util/vector_pool.hpp"
+#include "util/vecmath.hpp"
 
 namespace mpr {
 
 using GLenumValue = std::uint32_t;
-
-struct LlvmpipeDepth;  // llvmpipe's depth planes for one triangle (pipeline/llvmpipe_depth.hpp)
 
 // Where Mesa 22.3 departs from GL 1.1 the emulated Iris follows GL 1.1; `mpr
 // conform` replays a script once more with a departure emulated to tell
@@ -49,64 +47,23 @@ enum MesaDeparture : unsigned {
   kProjectiveNormalMatrix = 1u << 5,   // normals by the upper 3x3 of the modelview's 4x4 inverse (projective_normal_matrix.gls)
 };
 
-// Counters a renderer reports with --stats and a benchmark divides by time.
-struct PipelineCounters {
-  std::uint64_t triangles = 0;        // after primitive assembly
-  std::uint64_t trianglesDrawn = 0;   // survived clipping and culling
-  std::uint64_t fragmentsTested = 0;  // covered pixels entering the per-fragment tests
-  std::uint64_t fragmentsWritten = 0; // passed every test
-};
-
-// A fragment event for observers (the pass stepper's pixel history).
-struct FragmentEvent {
-  int x, y;
-  std::uint8_t stencilBefore, stencilAfter;
-  std::uint32_t depthBefore, depthIncoming;
-  FragmentFate fate;
-  Rgba8 colorAfter;
-};
-
-// The fragments a share of a draw tested and wrote.
-struct FragmentTally {
-  std::uint64_t tested = 0, written = 0;
-};
-
-namespace detail {
-// A GLContext's row threads (GLContext::setThreads) and what each has
-// counted since the context last drained them (thread k writes
-// rowTallies[k] only; apart, so no two share a cache line). A base of the
-// context: queued work refers to the context's members, so a context being
-// moved waits for it here, before any member moves.
-struct RowThreads {
-  struct alignas(64) RowTally {
-    FragmentTally tally;
-  };
-  std::vector<RowTally> rowTallies;
-  std::unique_ptr<RowQueue> rowQueue;
-
-  RowThreads() = default;
-  RowThreads(RowThreads&& other) {
-    if (other.rowQueue) other.rowQueue->wait();
-    rowTallies = std::move(other.rowTallies);
-    rowQueue = std::move(other.rowQueue);
-  }
-  RowThreads& operator=(RowThreads&&) = delete;
-};
-}  // namespace detail
-
-class GLContext : private detail::RowThreads {
+// The GL state machine: state, errors, Mesa's flush points and vertex-buffer
+// (vbo) rules, glBegin/glVertex/glEnd. At each draw Mesa's vbo makes (a
+// piece of a glBegin/glEnd block, a GL_QUADS draw closed at a flush) it
+// processes the vertices, freezes what the draw reads of the state in a
+// DrawSnapshot and hands both to its DrawStage (pipeline/draw/draw_stage.hpp),
+// which owns the framebuffer and the row threads.
+class GLContext {
  public:
   GLContext(int width, int height, const HardwareProfile& profile);
-  GLContext(GLContext&&) = default;  // after RowThreads has drained the queue
-  // Stops the row threads (after what is queued) while the framebuffer lives.
-  ~GLContext() { rowQueue.reset(); }
+  GLContext(GLContext&&) = default;  // the draw stage first: it waits for its row threads
 
   // Readers see every call drawn: a GL_QUADS draw still open for merging
   // (see OpenQuadDraw) is closed first, as glReadPixels flushes in GL, and
   // the draws, clears and accumulations queued for the row threads have run.
-  Framebuffer& framebuffer() { settle(); return fb_; }
-  const Framebuffer& framebuffer() const { settle(); return fb_; }
-  const PipelineCounters& counters() const { settle(); return counters_; }
+  Framebuffer& framebuffer() { settle(); return fb(); }
+  const Framebuffer& framebuffer() const { settle(); return fb(); }
+  const PipelineCounters& counters() const { settle(); return draw_.counters(); }
   // Closes the open GL_QUADS draw now (what Mesa's FLUSH_VERTICES does).
   void flushVertices();
   // What glReadPixels does before it reads (a @snapshot in Mesa's replay):
@@ -118,9 +75,9 @@ class GLContext : private detail::RowThreads {
   void closeQuadDraw();  // the open GL_QUADS draw only, not the vbo's flush (a glBegin of another mode)
 
   // --- per-pixel inspection for tests -----------------------------------
-  std::uint32_t stencilAt(int x, int y) const { settle(); return fb_.stencil(x, y); }
-  std::uint32_t depthAt(int x, int y) const { settle(); return fb_.depth(x, y); }
-  Rgba8 colorAt(int x, int y) const { settle(); return fb_.color(x, y); }
+  std::uint32_t stencilAt(int x, int y) const { settle(); return fb().stencil(x, y); }
+  std::uint32_t depthAt(int x, int y) const { settle(); return fb().depth(x, y); }
+  Rgba8 colorAt(int x, int y) const { settle(); return fb().color(x, y); }
   std::array<std::int16_t, 4> accumAt(int x, int y) const;
 
   // --- errors -------------------------------------------------------------
@@ -226,7 +183,7 @@ class GLContext : private detail::RowThreads {
   // end of the rendering pipeline". A 3x3 projective map of normalised device
   // x, y in the paper's row-vector form, [u v q] = [x y 1] M (glm: column k
   // gives output k), applied after the perspective divide and before the
-  // viewport; depth is kept. See windowMap semantics in gl_context_draw.cpp.
+  // viewport; depth is kept. See its semantics in pipeline/draw/triangle_setup.cpp.
   // Not part of the GL state (no glGet, not saved by glPush/Pop): a stage of
   // the emulated hardware that a renderer switches on and off.
   void setWindowMap(const std::optional<glm::mat3>& map) {
@@ -240,34 +197,18 @@ class GLContext : private detail::RowThreads {
 
   // Observes every fragment that reaches the per-fragment tests; costs nothing
   // when unset.
-  std::function<void(const FragmentEvent&)> fragmentObserver;
+  FragmentObserver fragmentObserver;
 
-  // Threads the framebuffer's rows are shared out over (util/row_queue.hpp,
-  // drawDeferred). With more than one, draws, clears and accumulations are
-  // queued and run behind the calls, thread k drawing the rows y with
-  // y mod threads == k of each in submission order; the calls go on
-  // (transform, lighting, set-up) while they run, and a reader waits for
-  // them. Every pixel still sees its fragments in the same order, so the
-  // bytes, counts and observed histories are the same at any count (with an
-  // observer set, every triangle is drawn on the calling thread as it comes).
-  // Default 1: everything on the calling thread.
-  void setThreads(int threads);
-  int threads() const { return rowQueue ? rowQueue->threads() : 1; }
-  // With row threads, a draw is queued in pieces of at most this many
-  // triangles: the threads start on the first while the rest are set up,
-  // and the set-ups in flight stay bounded however long the draw.
-  static constexpr std::size_t kTrianglesPerQueuedDraw = 256;
+  // Threads the framebuffer's rows are shared out over (DrawStage::setThreads:
+  // the bytes, counts and observed histories are the same at any count).
+  void setThreads(int threads) { draw_.setThreads(threads); }
+  int threads() const { return draw_.threads(); }
+  static constexpr std::size_t kTrianglesPerQueuedDraw = DrawStage::kTrianglesPerQueuedDraw;
 
  private:
   bool clearByQuad(const ClearBuffers& which) const;
 
-  struct Vertex {  // what glVertex captures, processed at glEnd
-    Vec4 object;
-    Vec4 color;
-    Vec3 normal;
-    std::uint32_t material;  // index into blockMaterials_: the materials in force at this vertex
-  };
-  static_assert(sizeof(Vertex) == 12 * sizeof(float), "no padding: RecentResults compares its bytes");
+  using Vertex = CapturedVertex;  // what glVertex captures, processed at glEnd
   RecentResults<Vertex, ClipVertex, 256> recentVertices_;  // end()'s processed vertices of the piece
 
   // The GL_QUADS draw Mesa's vbo is building: consecutive glBegin(GL_QUADS)
@@ -300,11 +241,7 @@ class GLContext : private detail::RowThreads {
   void copyToCurrent();        // vbo_exec_copy_to_current
   void copyAndResetFormat();   // vbo_exec_FlushVertices_internal: copyToCurrent, then vbo_reset_all_attr
   void setCurrentColor(const Vec4& c);
-  void drawQuadsPiece(std::vector<ClipVertex> piece);      // one GL_QUADS draw piece
-  void drawQuadStripPiece(const std::vector<ClipVertex>& piece);
-  // Whether any of the first `count` vertices lies outside a plane of the
-  // draw module (its clip mask), which makes it run its pipeline.
-  bool anyOutsideDrawPlanes(const std::vector<ClipVertex>& processed, std::size_t count) const;
+  void drawQuadsPiece(std::vector<ClipVertex> piece, bool colorVarying);  // one GL_QUADS draw piece
 
   void setError(GLenumValue e);
   bool checkOutsideBeginEnd();  // GL_INVALID_OPERATION inside glBegin/glEnd; no flush
@@ -331,81 +268,37 @@ class GLContext : private detail::RowThreads {
   void analyseMatrices(bool modelview, bool projection);
   void afterMatrixChange();
   void applyColorMaterial();
-  // The vertex through transform and lighting; `lighting` is the draw's
-  // lighting state, whose materials the vertex replaces.
-  ClipVertex processVertex(const Vertex& v, LightingState& lighting) const;
-  // pairsSwapped: each two consecutive triangles drawn in the other order (an unclipped quad strip).
-  void drawProcessed(PrimitiveType type, const std::vector<ClipVertex>& processed, bool quadsOtherDiagonal,
-                     bool pairsSwapped = false);
+  // glEnd's steps: the matrices and clip planes of the block
+  // (deriveBlockState), the pieces Mesa's vbo cut it into (vboPieces), the
+  // lighting its vertices share (blockLighting), then each piece processed
+  // (processPiece: pipeline/draw/vertex_processing.hpp on the piece's frozen
+  // VertexSnapshot) and handed on (drawPiece): the whole block as one piece
+  // where cutting it changes nothing drawn, else piece by piece with the
+  // vertices the vbo carries over (drawInPieces).
+  struct VboPiece {
+    std::size_t end;      // vertices_ index where the piece stops
+    bool shininessZero;   // Mesa's material_shininess_is_zero for its draw
+    bool colorVarying;    // the colour is in its vertex format
+  };
+  void deriveBlockState();
+  std::vector<VboPiece> vboPieces();
+  LightingState blockLighting() const;
+  // The first `count` of `indices` (vertices_ indices; all of vertices_
+  // when null), lit by the program a piece's draw selects.
+  std::vector<ClipVertex> processPiece(const std::size_t* indices, std::size_t count, bool shininessZero,
+                                       LightingState& lighting);
+  VertexSnapshot vertexSnapshot() const;  // the state processVertex reads, for the piece about to be processed
+  void drawPiece(std::vector<ClipVertex> processed, bool colorVarying, bool last);
+  void drawInPieces(const std::vector<VboPiece>& pieces, LightingState& lighting);
   void settle() const;  // closes the open quad draw and drains the queue (a reader sees it drawn)
-  void drain() const;   // waits for the row threads' queue; their fragment counts into counters_
-  void drawTriangle(const std::array<ClipVertex, 3>& tri, const LlvmpipeDepth& depth);
-  void rasterizeClippedTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
-                                const LlvmpipeDepth& depth);
-  // A triangle Mesa's draw module clips: llvmpipe's fan of it, each pixel its
-  // fixed-point edges cover, its depth and colour from that fan triangle.
-  void rasterizeLlvmpipeFan(const LlvmpipeDepth& depth);
-  // What a draw's fragments go through: the per-fragment state and the
-  // function chosen for it, and whether fragmentObserver sees each one. A
-  // queued draw holds its own copy of the state (the calls go on changing frag_).
-  struct DrawState {
-    const FragmentState& frag;
-    FragmentPipeline pipeline;
-    bool observed;
-  };
-  DrawState currentDrawState() const { return {frag_, fragmentPipeline_, static_cast<bool>(fragmentObserver)}; }
-  // A triangle set up for drawing: what its rows need, and the rows.
-  struct ClippedTriangleRows {
-    std::array<SnappedVertex, 3> snapped;
-    PixelBounds bounds;
-    TriangleShading shading;
-  };
-  struct FanTriangleRows {  // one triangle of llvmpipe's fan
-    FanShading shading;
-    LlvmpipeDepth::Triangle triangle;
-    std::int64_t x0, x1, y0, y1;  // columns, and rows in llvmpipe's y-down order
-    // llvmpipe's draw region (framebuffer within the scissor box), inclusive,
-    // y-down: for a triangle whose steps wrap (LlvmpipeTileRaster).
-    std::array<int, 4> llvmpipeRegion{};
-  };
-  struct DeferredTriangle {  // the index of its set-up in deferredClipped_ or deferredFan_
-    std::uint32_t index;
-    bool fan;
-  };
-  // The rows y with y mod stride == phase of a set-up triangle.
-  // (fragments: the share's span to fill, scratch kept between triangles.)
-  void drawRows(const ClippedTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase,
-                FragmentSpan& fragments);
-  void drawRows(const FanTriangleRows& job, const DrawState& state, FragmentTally& tally, int stride, int phase,
-                FragmentSpan& fragments);
-  void defer(const FanTriangleRows& job);
-  void drawDeferred();  // the deferred triangles, in order, queued for the row threads
-  // The per-fragment operations, counted, observed.
-  void submitFragment(Fragment& f, const DrawState& state, FragmentTally& tally);
-  // The same for a span of fragments: one call of the state's span function,
-  // or fragment by fragment in the span's order when it is observed.
-  void submitSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally);
-  // Before a span is shaded: true when the state's stencil test, taken first,
-  // fails for every pixel of it (x, y, count); those are then done, counted
-  // as tested (FragmentPipeline::stencilRejectsAll). Never for an observed draw.
-  bool stencilRejectsSpan(const FragmentSpan& span, const DrawState& state, FragmentTally& tally);
-  // Draws now: rows(tally, n, k) for k < n on the row threads after what is
-  // queued, and waits (without threads, or with an observer set,
-  // rows(tally, 1, 0) here); the tallies summed into counters_.
-  template <typename Rows>  // Rows: void(FragmentTally&, int n, int k); defined in gl_context_draw.cpp
-  void drawNow(const Rows& rows);
-  // The colours a triangle wound `ccw` (GL window space) takes: 0 front, 4
-  // back (two-sided lighting); -1 when culled.
-  int facingColorOffset(bool ccw) const;
-  // Whether drawTriangle would take `tri` unclipped to rasterizeClippedTriangle
-  // and drop it there at the facing test (culled, no area, or a position not
-  // finite): then nothing of its set-up is needed. Without the window map.
-  bool culledBeforeSetUp(const std::array<ClipVertex, 3>& tri, const WindowTransform& window) const;
+  void drain() const { draw_.drain(); }  // waits for the row threads' queue
   PixelRect drawRegion() const;  // viewport ∩ scissor ∩ window
-  // work(rows) over the region's rows: queued for the row threads, one row at
-  // a time, or here without them (clears and accumulation: a pixel's result
-  // is its own). `work` is kept until it has run: it holds what it needs.
-  void forRowBlocks(const PixelRect& region, std::function<void(const PixelRect&)> work);
+  // The state a draw reads, frozen for the draw handed on now (the clip
+  // planes as end() derived them for its block); `colorVarying`: the colour
+  // is in the vertex format of the draw.
+  const DrawSnapshot& drawSnapshot(bool colorVarying);
+  Framebuffer& fb() { return draw_.framebuffer(); }
+  const Framebuffer& fb() const { return draw_.framebuffer(); }
 
   // Values as Mesa's setters store and compare them, where MPR keeps them
   // converted (a stencil mask at the buffer's width, a clamped reference):
@@ -421,10 +314,11 @@ class GLContext : private detail::RowThreads {
     std::array<GLenumValue, 5> hints{0x1100, 0x1100, 0x1100, 0x1100, 0x1100};  // GL_DONT_CARE
   };
 
-  Framebuffer fb_;
+  // First: moved first, it waits for what its row threads still draw.
+  DrawStage draw_;
+  DrawSnapshot drawSnapshot_;  // refilled for each draw handed on (drawSnapshot)
   MesaSetterValues setterValues_;
   GLenumValue error_ = 0;
-  PipelineCounters counters_;
 
   // framebuffer state
   PixelRect viewportBox_;
@@ -436,15 +330,6 @@ class GLContext : private detail::RowThreads {
   std::uint32_t quadClearDepth_ = 0;  // the depth a clear drawn as a quad stores (clearByQuad)
   std::array<float, 4> clearAccumValue_{0, 0, 0, 0};
   FragmentState frag_;
-  FragmentPipeline fragmentPipeline_{};  // processFragment specialised for frag_, chosen per draw
-  bool deferring_ = false;               // this draw's triangles are kept for drawDeferred
-  std::vector<DeferredTriangle> deferred_;  // in submission order
-  std::vector<ClippedTriangleRows> deferredClipped_;
-  std::vector<FanTriangleRows> deferredFan_;
-  // deferredClipped_'s storage after its draw has run, for a later draw
-  // (shared: the row thread that ran the draw last hands it back).
-  std::shared_ptr<VectorPool<ClippedTriangleRows>> spentClipped_ =
-      std::make_shared<VectorPool<ClippedTriangleRows>>(4);
 
   // rasterization state
   bool cullEnabled_ = false;
@@ -477,19 +362,6 @@ class GLContext : private detail::RowThreads {
     bool colorVarying;               // the colour was in that format
   };
   std::vector<BlockWrap> blockWraps_;
-  // Whether the colour is in the vertex format of the draw being drawn (set
-  // by end() per piece, by closeQuadDraw for the quad draw it closes).
-  bool pieceColorVarying_ = false;
-  // Whether every fragment of the draw being drawn takes one colour as it is:
-  // flat shading, or Mesa's current colour. Unlit, with no colour in the
-  // vbo's vertex format (none given inside glBegin/glEnd since the format
-  // was last reset), Mesa's fixed-function fragment program does not read
-  // the interpolated colour: it reads the current colour, clamped, as a
-  // uniform (ff_fragment_shader.cpp get_gl_Color;
-  // STATE_CURRENT_ATTRIB_MAYBE_VP_CLAMPED), exactly, not as llvmpipe's
-  // perspective interpolation would give it (current_colour_exact.gls).
-  // Every vertex of such a draw holds that colour.
-  bool uniformColor() const { return flatShading_ || (!lightingEnabled_ && !pieceColorVarying_); }
   GLenumValue colorMaterialFace_, colorMaterialMode_;
   Vec4 currentColor_{1, 1, 1, 1};
   Vec3 currentNormal_{0, 0, 1};

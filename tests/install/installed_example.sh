@@ -9,7 +9,8 @@ SRC="$2"
 WORK="$(mktemp -d)"
 trap 'rm -rf "$WORK"' EXIT
 cmake --install "$BUILD" --prefix "$WORK/prefix" >/dev/null
-for f in include/mpr/mpr.hpp include/mpr/pipeline/gl/gl_context.hpp include/mpr/script/gl_script.hpp include/mpr/testing/gtest_helpers.hpp \
+for f in include/mpr/mpr.hpp include/mpr/pipeline/gl/gl_context.hpp include/mpr/pipeline/draw/draw_stage.hpp \
+         include/mpr/script/gl_script.hpp include/mpr/testing/gtest_helpers.hpp \
          lib/libmpr_pipeline.a lib/libmpr_script.a lib/cmake/MPR/MPRConfig.cmake lib/cmake/MPR/MPRTargets.cmake lib/pkgconfig/mpr.pc bin/mpr; do
   [[ -e "$WORK/prefix/$f" ]] || { echo "FAIL: $f was not installed" >&2; exit 1; }
 done

@@ -1,4 +1,4 @@
-// Culling decided before llvmpipe's set-up (GLContext::culledBeforeSetUp):
+// Culling decided before llvmpipe's set-up (DrawStage::culledBeforeSetUp):
 // a back face is dropped exactly where the full path drops it. Culling
 // changes neither count of triangles (drawTriangle counts a triangle as
 // drawn before its facing test, on the unclipped path and on llvmpipe's

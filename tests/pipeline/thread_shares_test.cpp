@@ -1,4 +1,4 @@
-// Row shares (GLContext::setThreads, drawDeferred) with every draw shared
+// Row shares (DrawStage::setThreads, drawDeferred) with every draw shared
 // out, however small (a share of 1 pixel): on every script of the
 // conformance corpus, its reproducers and scenes/ (clipped polygons,
 // llvmpipe fans, window maps, stencil, blending, accumulation), the
