@@ -21,7 +21,7 @@ namespace {
 // allocated again after that is touched page by page anew, a page fault
 // each. Kept instead (blocks below 32 MB from the heap, the top trimmed past
 // 512 MB free), they are reused; the peak is what the run needs either way.
-// Nothing outside glibc. (Measurements: docs, performance notes.)
+// Nothing outside glibc. (Measurements: docs/dev/draw-path.md, "Freed memory kept".)
 void keepFreedHeapMemory() {
 #if defined(__GLIBC__)
   // Setting either fixes it (glibc's dynamic threshold stops moving).

@@ -316,7 +316,10 @@ class GLContext {
 
   // First: moved first, it waits for what its row threads still draw.
   DrawStage draw_;
-  DrawSnapshot drawSnapshot_;  // refilled for each draw handed on (drawSnapshot)
+  // Refilled for each draw handed on (drawSnapshot); its clip planes are
+  // the block's, derived at glEnd (deriveBlockState) and kept for the
+  // draws of that block, the GL_QUADS draw closed later included.
+  DrawSnapshot drawSnapshot_;
   MesaSetterValues setterValues_;
   GLenumValue error_ = 0;
 
@@ -377,8 +380,6 @@ class GLContext {
   // per-draw derived state, computed at glEnd
   Mat4 mvp_;
   glm::mat3 normalMatrix_;
-  std::vector<ClipPlane> clipPlanesClip_;
-  std::vector<ClipPlane> userPlanesClip_;  // clipPlanesClip_'s user planes (after the six of the view volume)
   std::optional<glm::mat3> windowMap_;
   unsigned departures_ = 0;  // MesaDeparture bits
 };

@@ -173,13 +173,16 @@ void GLContext::deriveBlockState() {
   normalMatrix_ = (affine || (departures_ & kProjectiveNormalMatrix))
                       ? glm::transpose(glm::mat3(modelview_.mesaTop().inverse))
                       : glm::transpose(glm::inverse(glm::mat3(mv)));
-  clipPlanesClip_ = viewVolumePlanes();
+  // The block's clip planes, in clip coordinates, straight into the snapshot
+  // its draws are handed on with (drawSnapshot leaves them as they are).
+  std::vector<ClipPlane>& planes = drawSnapshot_.clipPlanes;
+  planes = viewVolumePlanes();
   // _mesa_update_clip_plane: the eye plane by the projection's inverse as
   // Mesa keeps it (the clip-space planes st_atom_clip.c hands the draw module).
   const Mat4& projInverse = projection_.mesaTop().inverse;  // analysed at glBegin
   for (int i = 0; i < 6; ++i)
-    if (clipPlaneEnabled_[i]) clipPlanesClip_.push_back(mesaTransformRowVector(clipPlanesEye_[i], projInverse));
-  userPlanesClip_.assign(clipPlanesClip_.begin() + 6, clipPlanesClip_.end());
+    if (clipPlaneEnabled_[i]) planes.push_back(mesaTransformRowVector(clipPlanesEye_[i], projInverse));
+  drawSnapshot_.userPlanes.assign(planes.begin() + DrawSnapshot::kViewVolumePlanes, planes.end());
   if (windowMap_) {
     // The end-of-pipeline map: what lands in the viewport is |u| <= q and
     // |v| <= q (so q >= 0), which is linear in clip coordinates (u w is
@@ -188,10 +191,10 @@ void GLContext::deriveBlockState() {
     const glm::mat3& m = *windowMap_;
     const Vec4 u(m[0][0], m[0][1], 0.0f, m[0][2]), v(m[1][0], m[1][1], 0.0f, m[1][2]),
         q(m[2][0], m[2][1], 0.0f, m[2][2]);
-    clipPlanesClip_[2] = q + u;
-    clipPlanesClip_[3] = q - u;
-    clipPlanesClip_[4] = q + v;
-    clipPlanesClip_[5] = q - v;
+    planes[2] = q + u;
+    planes[3] = q - u;
+    planes[4] = q + v;
+    planes[5] = q - v;
   }
 }
 
@@ -388,8 +391,7 @@ const DrawSnapshot& GLContext::drawSnapshot(bool colorVarying) {
   s.drawRegion = drawRegion();
   s.scissoredFramebuffer = scissorEnabled_ ? fb().bounds().intersect(scissorBox_) : fb().bounds();
   s.windowMap = windowMap_;
-  s.clipPlanes.assign(clipPlanesClip_.begin(), clipPlanesClip_.end());
-  s.userPlanes.assign(userPlanesClip_.begin(), userPlanesClip_.end());
+  // s.clipPlanes and s.userPlanes: the block's, set by deriveBlockState.
   return s;
 }
 
