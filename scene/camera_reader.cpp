@@ -40,6 +40,12 @@ void readCamera(const SceneNodeReader& in, const YAML::Node& n, Camera& c) {
   if (n["aperture"]) c.aperture = static_cast<float>(in.number(n["aperture"], "camera.aperture", 0.0, 1e6));
   if (n["focal_distance"])
     c.focalDistance = static_cast<float>(in.number(n["focal_distance"], "camera.focal_distance", 0.0, 1e30, true));
+  // The distance in focus is a lens's: a pinhole (aperture 0, the pipeline's
+  // and the reference's alike) has everything in focus.
+  if (n["focal_distance"] && !(c.aperture > 0.0f) && !in.givenBySet(n["focal_distance"]) &&
+      !(n["aperture"] && in.givenBySet(n["aperture"])))
+    in.fail(n["focal_distance"], "camera.focal_distance is the distance a lens keeps in focus, and camera.aperture is 0 "
+                                 "(a pinhole: everything is in focus); give aperture above 0 for depth of field");
   const YAML::Node at = n["far"] ? n["far"] : n;
   if (!(c.far > c.near)) in.fail(at, "camera.far must be greater than camera.near");
   if (c.position == c.lookAt) in.fail(n["look_at"] ? n["look_at"] : n, "camera.look_at must differ from camera.position");

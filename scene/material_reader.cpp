@@ -10,6 +10,64 @@
 namespace mpr {
 namespace {
 
+std::string kindName(MaterialKind k) {
+  switch (k) {
+    case MaterialKind::Diffuse: return "diffuse";
+    case MaterialKind::Mirror: return "mirror";
+    case MaterialKind::Refractive: return "refractive";
+    case MaterialKind::Translucent: return "translucent";
+    case MaterialKind::Frosted: return "frosted";
+  }
+  return "?";
+}
+
+// pbrt's rule: a key accepted must count. Each specular kind draws with its
+// own keys (algorithms/draw_window.cpp, the reference's ray_tracer.cpp): a
+// key this material's kind does not read, at any render setting, is refused
+// where it is written, naming the kinds that read it. A value or a kind a
+// --set gave is not (scene/keys_count.cpp says why).
+void checkMaterialKeysCount(const SceneNodeReader& in, const YAML::Node& n, const SceneMaterial& m, const std::string& where) {
+  const MaterialKind k = m.kind;
+  const bool mirror = k == MaterialKind::Mirror, frosted = k == MaterialKind::Frosted;
+  const bool refracting = k == MaterialKind::Refractive || k == MaterialKind::Translucent || frosted;
+  const bool fogged = k == MaterialKind::Translucent || frosted;
+  const bool kindBySet = n["kind"] && in.givenBySet(n["kind"]);
+  const auto refuse = [&](const char* key, bool uses, const std::string& why) {
+    if (uses || !n[key] || kindBySet || in.givenBySet(n[key])) return;
+    in.fail(n[key], where + " (kind " + kindName(k) + ") does not use '" + key + "': " + why);
+  };
+  refuse("reflectance", mirror,
+         std::string("only mirrors reflect (kind: mirror)") +
+             (refracting ? "; what a refracting face passes on is its transmittance" : ""));
+  refuse("ior", refracting, "only refracting materials bend the view through them (kind: refractive, translucent or frosted)");
+  refuse("transmittance", refracting,
+         std::string("only refracting materials are seen through (kind: refractive, translucent or frosted)") +
+             (mirror ? "; what a mirror passes on is its reflectance" : ""));
+  refuse("fog_distance", fogged, "only translucent and frosted materials are fogged (kind: translucent or frosted)");
+  refuse("shear", frosted,
+         std::string("only frosted materials are sheared (kind: frosted)") +
+             (mirror ? "; a glossy mirror's view is sheared by its roughness" : ""));
+  refuse("samples", frosted || mirror,
+         "only frosted materials and glossy mirrors accumulate sheared images (kind: frosted, or kind: mirror with a "
+         "roughness)");
+  const auto bySet = [&](const char* key) { return n[key] && in.givenBySet(n[key]); };
+  // A glossy mirror is one with a roughness (its view sheared by 2 alpha).
+  if (mirror && n["samples"] && !n["roughness"] && !bySet("samples"))
+    in.fail(n["samples"], where + " (kind mirror) does not use 'samples' without a roughness: only a glossy mirror's "
+                                  "view is sheared and accumulated (give roughness, at least 0.125)");
+  // The Phong exponent and Ward's alpha shape the highlight, which a zero
+  // specular leaves out (GL's and the reference's alike); a mirror's
+  // roughness also makes its reflection glossy.
+  const bool noSpecular = m.specular == Vec3(0.0f) && !bySet("specular");
+  if (noSpecular && n["shininess"] && m.shininess != 0.0f && !bySet("shininess"))
+    in.fail(n["shininess"], where + " (kind " + kindName(k) + ") does not use 'shininess' while its specular is 0: "
+                                    "shininess shapes the specular highlight (give specular above 0)");
+  if (noSpecular && !mirror && n["roughness"] && !bySet("roughness") && !kindBySet)
+    in.fail(n["roughness"], where + " (kind " + kindName(k) + ") does not use 'roughness' while its specular is 0: "
+                                    "roughness shapes the specular highlight (1997 eq. 6; give specular above 0), and "
+                                    "makes only a mirror's reflection glossy (kind: mirror)");
+}
+
 SceneMaterial readMaterial(const SceneNodeReader& in, const YAML::Node& n, const std::string& name) {
   const std::string where = "material '" + name + "'";
   in.checkKeys(n, scene_format::kMaterialKeys, where);
@@ -61,6 +119,7 @@ SceneMaterial readMaterial(const SceneNodeReader& in, const YAML::Node& n, const
   }
   if (n["shear"]) m.shear = static_cast<float>(in.number(n["shear"], where + " shear", 0.0, 1e30));
   if (n["samples"]) m.samples = in.integer(n["samples"], where + " samples", 1, 1024);
+  checkMaterialKeysCount(in, n, m, where);
   return m;
 }
 

@@ -55,6 +55,11 @@ class ObjectReader {
       else if (p == "plane") o.mesh = makePlane(sub ? sub : 1), o.castsShadows = false;
       else in.fail(n["primitive"], where + " primitive must be box, sphere, cylinder, quad or plane, not '" + p + "'");
     } else {
+      // A mesh is drawn as its file gives it (render.tessellation splits lit
+      // faces of any object): subdivisions would count for nothing.
+      if (n["subdivisions"] && !in.givenBySet(n["subdivisions"]))
+        in.fail(n["subdivisions"], where + " does not use 'subdivisions': only primitives are divided (a mesh is drawn "
+                                           "as its file gives it)");
       const std::string rel = in.string(n["mesh"], where + " mesh");
       const std::filesystem::path path = std::filesystem::path(in.file()).parent_path() / rel;
       if (confine) {
@@ -108,6 +113,9 @@ class ObjectReader {
       o.material = it->second;
     }
     if (n["casts_shadows"]) o.castsShadows = in.boolean(n["casts_shadows"], where + " casts_shadows");
+    // A mirror or a pane is opaque to the direct light whatever its
+    // primitive: quads and planes cast no shadow by default only as walls.
+    else if (s.materials[static_cast<std::size_t>(o.material)].specularKind()) o.castsShadows = true;
     if (s.materials[static_cast<std::size_t>(o.material)].specularKind()) checkPlanarFaces(n, o, where);
     return o;
   }

@@ -36,6 +36,7 @@ Scene readScene(const SceneNodeReader& in, YAML::Node doc, bool confine) {
   if (const YAML::Node ms = doc["materials"]) materialIndex = readMaterials(in, ms, s.materials);
   if (const YAML::Node os = doc["objects"]) readObjects(in, os, materialIndex, confine, s);
   checkRenderLimits(in, doc, s);
+  checkKeysCount(in, doc, s);
   if (const YAML::Node e = doc["expect"]) readExpectations(in, e, s);
   return s;
 }

@@ -30,6 +30,10 @@ bool SceneNodeReader::givenBySet(const YAML::Node& at) const {
   return std::any_of(overrides_.begin(), overrides_.end(), [&](const SceneOverride& o) { return o.gave(at); });
 }
 
+bool SceneNodeReader::setInside(const YAML::Node& root) const {
+  return std::any_of(overrides_.begin(), overrides_.end(), [&](const SceneOverride& o) { return o.inside(root); });
+}
+
 void SceneNodeReader::warn(const YAML::Node& at, const std::string& message) const {
   try {
     fail(at, "warning: " + message);

@@ -31,6 +31,8 @@ class SceneNodeReader {
   const std::vector<std::string>& warnings() const { return warnings_; }
   // Whether a --set gave `at` (it has no line in the file).
   bool givenBySet(const YAML::Node& at) const;
+  // Whether a --set gave anything inside `root` (a section of the scene).
+  bool setInside(const YAML::Node& root) const;
 
   // `map` is a mapping of the section's keys, each given once; an unknown
   // key is refused with the closest known one.

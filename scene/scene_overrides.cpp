@@ -31,6 +31,8 @@ bool SceneOverride::made(const YAML::Node& at) const {
   return false;
 }
 
+bool SceneOverride::inside(const YAML::Node& root) const { return root && within(node, root); }
+
 SceneOverride applyOverride(YAML::Node& doc, const std::string& kv) {
   const auto eq = kv.find('=');
   if (eq == std::string::npos || eq == 0) throw SceneError("--set", 1, 1, "'" + kv + "' must be key.path=value");

@@ -20,6 +20,8 @@ struct SceneOverride {
   bool gave(const YAML::Node& at) const;
   // Whether `at` is a mapping its path made on the way.
   bool made(const YAML::Node& at) const;
+  // Whether the value it gave lies inside `root` (a section of the scene).
+  bool inside(const YAML::Node& root) const;
 };
 
 // Places `kv` ("key.path=value") in `doc`: a mapping entered by key (made

@@ -1,6 +1,7 @@
 #pragma once
 // The readers of a scene file's sections, one file each (render_settings_,
-// camera_, light_, material_, object_ and expectation_reader.cpp), called
+// camera_, light_, material_, object_ and expectation_reader.cpp, and
+// keys_count.cpp for what depends on several sections), called
 // in this order by loadSceneText (scene/scene_loader.hpp): a section may
 // depend on those read before it (objects on materials, expectations on the
 // render settings and lights). Each reads through a SceneNodeReader, which
@@ -34,6 +35,11 @@ void readObjects(const SceneNodeReader& in, const YAML::Node& list, const std::m
 // render.tessellation makes, the stencil levels the recursion needs,
 // darkness_levels' stencil counts and accumulation buffer.
 void checkRenderLimits(const SceneNodeReader& in, const YAML::Node& doc, const Scene& s);
+// pbrt's rule for the keys whose use depends on the rest of the scene
+// (scene/keys_count.cpp): a render key, a light's radius, the camera's lens
+// or a material that would change nothing is refused at its place in the
+// file, or, where mpr reference still uses it, warned about once.
+void checkKeysCount(const SceneNodeReader& in, const YAML::Node& doc, const Scene& s);
 // expect: probes of the buffers at named points of the render.
 void readExpectations(const SceneNodeReader& in, const YAML::Node& list, Scene& s);
 

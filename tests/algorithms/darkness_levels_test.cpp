@@ -145,11 +145,11 @@ TEST(DarknessLevels, AgainstImages) {
           << "pixel " << x << ", " << 7 - y;
     }
   // The light alone from its centre, no shadows: lit_c = that image less the ambient.
-  std::string hard = kDarknessScene, unlit = kDarknessScene;
-  hard.replace(hard.find("radius: 2"), 9, "radius: 0");
-  unlit.replace(unlit.find("radius: 2"), 9, "radius: 0, color: [0, 0, 0]");
-  const Scene centre = loadSceneText(hard, "s.yaml", {"render.shadows=false"});
-  const Scene dark = loadSceneText(unlit, "s.yaml", {"render.shadows=false"});
+  // (By --set, as a comparison does: in the file the soft-shadow keys would
+  // have no radius to act on.)
+  const Scene centre = loadSceneText(kDarknessScene, "s.yaml", {"render.shadows=false", "lights.0.radius=0"});
+  const Scene dark =
+      loadSceneText(kDarknessScene, "s.yaml", {"render.shadows=false", "lights.0.radius=0", "lights.0.color=[0, 0, 0]"});
   GLContext gc(12, 8, indigoProfile()), gd(12, 8, indigoProfile());
   GLCommandStream sc(gc, false), sd(gd, false);
   renderScene(centre, sc);

@@ -61,7 +61,6 @@ TEST(Refraction, IndexOneIsPlainTransparencyBitForBit) {
 camera: {position: [0.3, 0.2, 0], look_at: [0, 0, -1], fov: 70, near: 0.1, far: 20}
 lights: [{position: [1, 1, -1]}]
 materials:
-  clear: {kind: refractive, ior: 1, transmittance: 1, diffuse: [0.5, 0.5, 0.5]}
   red: {diffuse: [0.8, 0.2, 0.2], specular: [0.3, 0.3, 0.3], shininess: 20}
 objects:
   - {primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1]}
@@ -77,7 +76,10 @@ objects:
     return std::make_pair(gl.framebuffer().colorData(), r.counts.views);
   };
   const auto [without, viewsWithout] = render(base);
-  const auto [with, viewsWith] = render(base + pane);
+  // The pane's material with the pane (a material no object has is refused).
+  std::string withClear = base;
+  withClear.insert(withClear.find("  red:"), "  clear: {kind: refractive, ior: 1, transmittance: 1, diffuse: [0.5, 0.5, 0.5]}\n");
+  const auto [with, viewsWith] = render(withClear + pane);
   EXPECT_EQ(viewsWithout, 1u);
   EXPECT_EQ(viewsWith, 2u);
   ASSERT_EQ(with.size(), without.size());

@@ -81,7 +81,7 @@ materials: {red: {diffuse: [0.9, 0.3, 0.1]}, blue: {diffuse: [0.1, 0.3, 0.9]}}
 objects:
   - {primitive: plane, scale: [6, 1, 6], material: blue}
   - {primitive: box, translate: [0.2, 0.5, 0], rotate: [30, 0, 1, 0], scale: 0.9, material: red}
-render: {width: 32, height: 24, shadows: false}
+render: {width: 32, height: 24}
 )";
   Scene single = loadSceneText(yaml, "flat.yaml");
   Scene accumulated = single;

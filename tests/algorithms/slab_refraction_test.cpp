@@ -128,7 +128,7 @@ objects:
   - {name: wall, primitive: quad, translate: [0, 1, -2], scale: [8, 4, 1], material: wall}
   - {name: square, primitive: quad, translate: [0.3, 1.2, -1.9], scale: 0.8, material: lamp}
   - {name: pane, primitive: quad, translate: [0, 1, 2], rotate: [-35, 0, 1, 0], scale: [3, 3, 1], material: glass}
-render: {width: 64, height: 48, shadows: false}
+render: {width: 64, height: 48}
 )";
   const auto render = [&](const char* ior, const char* thick) {
     std::string t = scene;
@@ -167,10 +167,11 @@ TEST(SlabRefraction, NoPixelGetsTheDirectAndThePassedOnLightBoth) {
 camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov: 90, near: 0.1, far: 20}
 lights: [{position: [6, 0, 1]}]
 ambient: [0.1, 0.1, 0.1]
-materials: {glass: {kind: refractive, ior: 1.5, transmittance: 0.5, thickness: 1.0}, white: {diffuse: [0.8, 0.8, 0.8]}}
-objects:
+materials:
+  white: {diffuse: [0.8, 0.8, 0.8]}
+)") + (pane ? "  glass: {kind: refractive, ior: 1.5, transmittance: 0.5, thickness: 1.0}\n" : "") + R"(objects:
   - {name: wall, primitive: quad, translate: [0, 0, -4], scale: [8, 8, 1], material: white}
-)") + (pane ? "  - {name: pane, primitive: quad, translate: [3, 0, -1.5], scale: 1.2, material: glass}\n" : "") +
+)" + (pane ? "  - {name: pane, primitive: quad, translate: [3, 0, -1.5], scale: 1.2, material: glass}\n" : "") +
                              "render: {width: 64, height: 64}\n",
                          "slab-sliver.yaml");
   };

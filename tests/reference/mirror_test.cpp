@@ -15,7 +15,6 @@ ambient: [0, 0, 0]
 materials:
   red:    {diffuse: [0, 0, 0], emission: [0.9, 0.1, 0.1]}
   green:  {diffuse: [0, 0, 0], emission: [0.1, 0.8, 0.2]}
-  mirror: {kind: mirror, diffuse: [0, 0, 0], reflectance: 1}
 render: {width: 64, height: 48}
 objects:
   - {name: red wall, primitive: quad, translate: [-1.5, 0, 8], rotate: [180, 0, 1, 0], scale: [3, 3, 1], material: red}
@@ -24,7 +23,10 @@ objects:
 
 TEST(Mirror, ShowsTheMirroredCamerasView) {
   // Real camera at z = 5 looking down -z at the mirror (4 x 4, in z = 0).
-  const std::string withMirror = std::string(kWall) +
+  // The mirror's material with the mirror (a material no object has is refused).
+  std::string wall = kWall;
+  wall.insert(wall.find("render:"), "  mirror: {kind: mirror, diffuse: [0, 0, 0], reflectance: 1}\n");
+  const std::string withMirror = wall +
                                  "  - {name: mirror, primitive: quad, scale: [4, 4, 1], material: mirror}\n"
                                  "camera: {position: [0, 0, 5], look_at: [0, 0, 0], fov: 45, near: 0.1, far: 50}\n";
   // Its image in the plane z = 0: z = -5 looking down +z, no mirror.

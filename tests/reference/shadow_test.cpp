@@ -15,7 +15,6 @@ camera: {position: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 45, near
 ambient: [0.1, 0.1, 0.1]
 materials:
   grey:   {diffuse: [0.5, 0.5, 0.5]}
-  mirror: {kind: mirror, diffuse: [0, 0, 0], reflectance: 1}
 render: {width: 101, height: 101}
 objects:
   - {name: floor, primitive: plane, subdivisions: 1, scale: [20, 1, 20], material: grey}
@@ -84,8 +83,10 @@ TEST(Shadow, MirrorPassesLightOntoTheHandComputedPatch) {
   // patch is 0 <= x <= 1.5, |z| <= (3 - x) / 2. There the light adds
   // 0.5 * N.L' with N.L' = 3 / |L' - P| (attenuation 1); e.g. (0.75, 0, 0):
   // 0.05 + 0.5 * 3 / 3.010399 + 0.5 * 3 / 3.75 = 0.05 + 0.498273 + 0.4 = 0.948273.
+  std::string floor = kFloor;  // with the mirror's material (a material no object has is refused)
+  floor.insert(floor.find("render:"), "  mirror: {kind: mirror, diffuse: [0, 0, 0], reflectance: 1}\n");
   const ReferenceImage im = test::traceText(
-      std::string(kFloor) +
+      floor +
           "  - {name: mirror, primitive: quad, translate: [2, 1.5, 0], rotate: [-90, 0, 1, 0], material: mirror}\n"
           "lights: [{position: [1, 3, 0], color: [1, 1, 1], attenuation: [1, 0, 0]}]\n",
       4);

@@ -120,8 +120,11 @@ TEST(SceneLoader, ErrorsNameLineColumnAndSuggest) {
             "method, or render.frosted: false / antialias_samples: 1)");
   EXPECT_EQ(errorOf("render: {soft_shadow_method: penumbra}\n"),
             "s.yaml:1:30: unknown soft_shadow_method 'penumbra' (known: images, darkness_levels, pivot)");
-  // Without a light radius the levels are one: nothing to refuse.
-  EXPECT_NO_THROW(loadSceneText("render: {soft_shadow_method: darkness_levels, soft_shadow_samples: 64, antialias_samples: 4}\n", "s.yaml"));
+  // Without a light radius there are no levels, so no limit of theirs to
+  // refuse: what is refused is the samples, with nothing to sample (issue 43).
+  EXPECT_EQ(errorOf("render: {soft_shadow_method: darkness_levels, soft_shadow_samples: 64, antialias_samples: 4}\n"),
+            "s.yaml:1:68: render.soft_shadow_samples 64 samples the lights that have a radius, and no light here has "
+            "one (give a light a radius for soft shadows)");
 }
 
 // Issue 48: a quoted scalar is a string wherever it stands. yaml-cpp hands
@@ -154,7 +157,7 @@ TEST(SceneLoader, QuotedNumbersAndBooleansAreRefused) {
   }
   // Plain and explicitly numeric scalars, and quoted text where text belongs, load.
   const Scene s = loadSceneText(
-      "camera: {fov: !!float 40}\nrender: {width: 20, shadows: false, profile: 'mesa'}\n"
+      "camera: {fov: !!float 40}\nlights: [{position: [0, 3, 0]}]\nrender: {width: 20, shadows: false, profile: 'mesa'}\n"
       "expect: [{after: 'end', stencil: [0, 0], value: 'SHAD_ZERO + 1'}]\n",
       "s.yaml");
   EXPECT_EQ(s.camera.fovY, 40.0f);

@@ -141,7 +141,8 @@ TEST(WardFit, DeltaAloneOvershoots) {
 
 // The loader applies eq. (6): E = 1.999 / alpha^2, specular 0.0398 E rho_s.
 TEST(WardFit, RoughnessBecomesTheFittedPhongTerm) {
-  const Scene s = loadSceneText("materials:\n  m: {specular: [0.5, 0.5, 0.5], roughness: 0.25}\n", "s.yaml");
+  const Scene s = loadSceneText("materials:\n  m: {specular: [0.5, 0.5, 0.5], roughness: 0.25}\nobjects: [{primitive: box, material: m}]\n",
+                                "s.yaml");
   const SceneMaterial& m = s.materials.at(1);
   EXPECT_EQ(m.shininess, static_cast<float>(1.999 / 0.0625));
   EXPECT_EQ(m.specular.x, 0.5f * static_cast<float>(0.0398 * (1.999 / 0.0625)));
