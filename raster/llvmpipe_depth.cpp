@@ -151,6 +151,8 @@ MPR_CPU_CLONES void LlvmpipeDepth::setUp(std::array<const Vec4*, 3> clip, std::a
   const std::int64_t area = wrappingSub(diff(fixed(p[0].x), fixed(p[1].x)) * diff(fixed(p[2].y), fixed(p[0].y)),
                                         diff(fixed(p[2].x), fixed(p[0].x)) * diff(fixed(p[0].y), fixed(p[1].y)));
   if (area == 0) return;  // llvmpipe draws nothing
+  const float ex = p[0].x - p[2].x, ey = p[0].y - p[2].y, fx = p[1].x - p[2].x, fy = p[1].y - p[2].y;
+  const float drawDet = ex * fy - ey * fx;
   // y-down positions: a positive area here is counter-clockwise in GL's y-up window.
   const bool ccwUp = area > 0;
   if (area < 0) {
@@ -171,6 +173,7 @@ MPR_CPU_CLONES void LlvmpipeDepth::setUp(std::array<const Vec4*, 3> clip, std::a
   t.x0Center = p[0].x - 0.5f;
   t.y0Center = p[0].y - 0.5f;
   t.ccwUp = ccwUp;
+  t.drawDet = drawDet;
   const PlaneCoefficients z = t.plane(p[0].z, p[1].z, p[2].z);
   t.a0 = z.a0;
   t.dzdx = z.dadx;

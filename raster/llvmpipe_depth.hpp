@@ -114,6 +114,15 @@ struct LlvmpipeDepth {
     // edges' half-plane constants of do_triangle_ccw (fill rule included).
     std::array<std::int64_t, 3> fixedX, fixedY, c;
     bool ccwUp = true;  // counter-clockwise in GL's y-up window space (its facing)
+    // Mesa's draw pipeline culls each triangle of a clipped fan before
+    // llvmpipe sets it up (draw_pipe_validate.c builds clip -> cull, and
+    // draw_pipe_cull.c cull_tri): det = ex fy - ey fx on the float window
+    // positions, e = v0 - v2, f = v1 - v2, in the order draw emitted them;
+    // det < 0 is counter-clockwise in GL's y-up window (llvmpipe's
+    // fixed-point area is -det), 0 back-facing. A sliver's float det and
+    // snapped area can have opposite signs: then culling either face drops
+    // it (repro/draw_cull_sliver.gls).
+    float drawDet = 0.0f;
     // Whether an edge's step, x[i] - x[i+1] or y[i] - y[i+1] in 1/256 pixel,
     // leaves llvmpipe's 32 bits once shifted by FIXED_ORDER (a vertex at
     // the clip-space origin, INT32_MIN): then its block rejects and

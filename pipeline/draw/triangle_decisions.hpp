@@ -57,6 +57,16 @@ inline Facing facingOf(const DrawSnapshot& s, const std::array<SnappedVertex, 3>
   return {area, facingColorOffset(s, area > 0)};
 }
 
+// Mesa's draw pipeline culls each triangle of a fan it clipped (its cull
+// stage follows the clip stage) on the float determinant of its window
+// positions (LlvmpipeDepth::Triangle::drawDet); a NaN det is not zero and
+// not below zero: back-facing, as a zero one.
+inline bool drawCullStageCulls(const DrawSnapshot& s, float drawDet) {
+  if (!s.cullEnabled) return false;
+  if (drawDet != 0.0f) return facingColorOffset(s, drawDet < 0.0f) == kCulled;
+  return s.cullFace != CullFace::Front;
+}
+
 // --- route through clipping ------------------------------------------------------
 
 enum class TriangleRoute : std::uint8_t {

@@ -169,6 +169,7 @@ void DrawStage::rasterizeLlvmpipeFan(const DrawSnapshot& s, const LlvmpipeDepth&
   // The region in llvmpipe's y-down rows.
   const int rowLo = fbHeight - region.y1, rowHi = fbHeight - 1 - region.y0;
   for (const LlvmpipeDepth::Triangle& t : depth.triangles) {
+    if (drawCullStageCulls(s, t.drawDet)) continue;
     const int colorOffset = facingColorOffset(s, t.ccwUp);
     if (colorOffset < 0) continue;
     FanTriangleRows job{shading, t, 0, 0, 0, 0};
