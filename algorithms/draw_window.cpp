@@ -36,10 +36,10 @@ class WindowRenderer {
                  const std::function<void(const DrawWindowProgress&)>& progress, const ViewSample& sample,
                  const ShadowPass* pivotBase)
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
-        shadows_(pivotBase ? ShadowPass(s, *pivotBase) : ShadowPass(s, p)), gl_scene_(s, gl, p.shadows || p.reflections) {
+        shadows_(pivotBase ? ShadowPass(s, *pivotBase) : ShadowPass(s, p)), gl_scene_(s, gl, p.usesStencil()) {
     gl_scene_.setViewSample(sample);
     image_ = sample.image;
-    if (p.shadows) refLights_ = reflectedLights(s, faces_);
+    if (p.reflectedLights > 0) refLights_ = reflectedLights(s, faces_);
     counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
   }
 
@@ -68,7 +68,7 @@ class WindowRenderer {
   }
 
  private:
-  bool usesStencil() const { return plan_.shadows || plan_.reflections; }
+  bool usesStencil() const { return plan_.usesStencil(); }
 
   // Starts a pass labelled with the routine path and the pseudo-code line.
   void pass(const std::string& kind, const std::string& what) {
@@ -110,6 +110,16 @@ class WindowRenderer {
         pass("apply_stencil", "back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)");
         apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, zero}, lv_);
       } else {
+        // No shadows in this view (past shadow_recursion_depth, or shadows
+        // off): the light and its virtual lights added unshadowed, each
+        // virtual light still only inside its light volume.
+        if (hasVirtualLights(light)) {
+          pass("apply_stencil", "render area to SHAD_ZERO | apply_stencil(EQUAL, ZERO, REPLACE, SHAD_ZERO)");
+          apply_stencil(gl_, {PaperCompare::Equal, zero, PaperPass::Replace, lv_.shadZero}, lv_);
+          draw_ref_shadows(cam, light, false);
+          pass("apply_stencil", "back to ZERO | apply_stencil(GREATER, SHAD_MIN, REPLACE, ZERO)");
+          apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, zero}, lv_);
+        }
         pass("light", "lit | draw_normal_objects(Camera, ZERO)  // light " + std::to_string(light) + " added");
         draw_normal_objects(cam, zero, &s_.lights[static_cast<std::size_t>(light)]);
       }
@@ -127,7 +137,7 @@ class WindowRenderer {
   // volume holds SHAD_ZERO again), the virtual light's shadows are counted
   // (make_all_shadows(CAN'T_INTERSECT)), and the virtual light is added on
   // what remains at SHAD_ZERO. Returns whether anything was drawn.
-  bool draw_ref_shadows(const ViewCamera& cam, int light) {
+  bool draw_ref_shadows(const ViewCamera& cam, int light, bool withShadows = true) {
     bool any = false;
     for (const ReflectedLight& rl : refLights_) {
       if (rl.light != light) continue;
@@ -144,19 +154,31 @@ class WindowRenderer {
       std::vector<const VolumeGeometry*> lightVolumes;
       for (const VolumeGeometry& v : rl.lightVolumes) lightVolumes.push_back(&v);
       countVolumes(gl_, lightVolumes, cam, s_.camera, gl_scene_.aspect(), lv_, true, true);
-      pass("shadow volume",
-           "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT, ref_face)");
-      ++counts_.shadowPasses, reportProgress();
-      std::vector<const VolumeGeometry*> vols;
-      for (const VolumeGeometry& v : rl.shadows) vols.push_back(&v);
-      counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, gl_scene_.aspect(), lv_, false);
-      pass("light", "lit by the virtual light | draw_normal_objects(Camera, SHAD_ZERO)");
+      if (withShadows) countRefShadows(cam, rl);
+      pass("light", withShadows ? "lit by the virtual light | draw_normal_objects(Camera, SHAD_ZERO)"
+                                : "lit by the virtual light, unshadowed | draw_normal_objects(Camera, SHAD_ZERO)");
       draw_normal_objects(cam, lv_.shadZero, &rl.virtualLight);
       pass("apply_stencil", "reset the counts | apply_stencil(GREATER, SHAD_MIN, REPLACE, SHAD_ZERO)");
       apply_stencil(gl_, {PaperCompare::Greater, lv_.shadMin, PaperPass::Replace, lv_.shadZero}, lv_);
       path_.pop_back();
     }
     return any;
+  }
+
+  bool hasVirtualLights(int light) const {
+    for (const ReflectedLight& rl : refLights_)
+      if (rl.light == light) return true;
+    return false;
+  }
+
+  // The virtual light's shadows inside its light volume.
+  void countRefShadows(const ViewCamera& cam, const ReflectedLight& rl) {
+    pass("shadow volume",
+         "virtual light's shadows | ref_light(light, ref_face); make_all_shadows(CAN'T_INTERSECT and MUST_INTERSECT, ref_face)");
+    ++counts_.shadowPasses, reportProgress();
+    std::vector<const VolumeGeometry*> vols;
+    for (const VolumeGeometry& v : rl.shadows) vols.push_back(&v);
+    counts_.zfailVolumes += countVolumes(gl_, vols, cam, s_.camera, gl_scene_.aspect(), lv_, false);
   }
 
   // The faces a virtual light's path passed: face N "name" > face M "name".

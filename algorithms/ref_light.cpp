@@ -1,5 +1,6 @@
 #include "algorithms/ref_light.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -90,12 +91,17 @@ double outgoingSide(const RefFace& f, DVec3 light) {
   return f.kind == MaterialKind::Mirror ? lightSide : -lightSide;
 }
 
-// Every vertex strictly on the side `sign` of the face's plane.
-bool whollyOnSide(const Mesh& mesh, const RefFace& f, double sign) {
-  if (mesh.positions.empty()) return false;
-  for (const Vec3& v : mesh.positions)
-    if (!(f.side(DVec3(v)) * sign > 0.0)) return false;
-  return true;
+// Every vertex on the side `sign` of the face's plane, or on the plane
+// within `touch` (an object standing on a mirror floor touches it: its
+// shadows in the floor's light were lost, issue 43), and some strictly.
+bool whollyOnSide(const Mesh& mesh, const RefFace& f, double sign, double touch) {
+  bool strictly = false;
+  for (const Vec3& v : mesh.positions) {
+    const double d = f.side(DVec3(v)) * sign;
+    if (!(d >= -touch)) return false;
+    strictly = strictly || d > touch;
+  }
+  return strictly;
 }
 
 }  // namespace
@@ -103,6 +109,8 @@ bool whollyOnSide(const Mesh& mesh, const RefFace& f, double sign) {
 std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces) {
   std::vector<ReflectedLight> out;
   const BoundingSphere bounds = sceneBoundingSphere(scene);
+  // Touching a face's plane: within float rounding of the scene's size.
+  const double touch = 1e-6 * std::max(1.0, bounds.radius + glm::length(bounds.centre));
   for (const LightPath& path : lightPaths(scene, faces, lightBounces(scene.render), kMaxLightPaths)) {
     const std::size_t k = path.faces.size();
     const RefFace& f = faces[static_cast<std::size_t>(path.faces.back())];
@@ -141,13 +149,28 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
     if (f.refracts() && f.thickness > 0.0)
       r.lightVolumes.push_back(objectShadowVolume(faceFacing(f, specular.name + " (its own shadow)", path.lights[k - 1]),
                                                   Vec3(path.lights[k - 1]), bounds));
-    for (const SceneObject& o : scene.objects) {
-      if (!o.castsShadows || isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render))
-        continue;
+    for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
+      const SceneObject& o = scene.objects[oi];
+      if (!o.castsShadows) continue;
+      // The faces the light passed pass it on (their light volumes); every
+      // other specular face blocks it as any caster does (a second mirror
+      // between the first and the floor: issue 43).
+      bool onPath = false;
+      for (const int fi : path.faces) onPath = onPath || faces[static_cast<std::size_t>(fi)].object == static_cast<int>(oi);
+      if (onPath) continue;
+      // A specular caster has two sides and is not in the depth buffer
+      // (shadow_pass.hpp, ShadowRole::SpecularFace).
+      const bool specular = isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render);
+      const auto volumeOf = [&](const SceneObject& caster) {
+        VolumeGeometry v = specular ? twoSidedShadowVolume(caster, r.virtualLight.position, bounds)
+                                    : objectShadowVolume(caster, r.virtualLight.position, bounds);
+        v.alwaysZFail = specular;
+        return v;
+      };
       // CAN'T_INTERSECT: the object stands where the light goes on from the
       // last face.
-      if (whollyOnSide(o.mesh, f, outgoingSide(f, path.lights[k - 1]))) {
-        VolumeGeometry v = objectShadowVolume(o, r.virtualLight.position, bounds);
+      if (whollyOnSide(o.mesh, f, outgoingSide(f, path.lights[k - 1]), touch)) {
+        VolumeGeometry v = volumeOf(o);
         if (!v.volume.empty()) r.shadows.push_back(std::move(v));
       }
       // MUST_INTERSECT, for every stretch of the path: between the light (or
@@ -159,10 +182,10 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
       for (std::size_t i = 0; i < k; ++i) {
         const RefFace& fi = faces[static_cast<std::size_t>(path.faces[i])];
         const DVec3 before = path.lights[i];
-        if (!whollyOnSide(o.mesh, fi, fi.side(before) > 0.0 ? 1.0 : -1.0)) continue;
+        if (!whollyOnSide(o.mesh, fi, fi.side(before) > 0.0 ? 1.0 : -1.0, touch)) continue;
         if (i > 0) {
           const RefFace& prev = faces[static_cast<std::size_t>(path.faces[i - 1])];
-          if (!whollyOnSide(o.mesh, prev, outgoingSide(prev, path.lights[i - 1]))) continue;
+          if (!whollyOnSide(o.mesh, prev, outgoingSide(prev, path.lights[i - 1]), touch)) continue;
         }
         if (!shadowCrossesFace(o.mesh, fi.polygon, i == 0 ? light.position : Vec3(before))) continue;
         SceneObject image = o;
@@ -171,7 +194,7 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
         for (Vec3& p : image.mesh.positions) p = Vec3(carryAlongPath(path, faces, i, DVec3(p)));
         if (carryTurnsWinding(path, faces, i))
           for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
-        VolumeGeometry v = objectShadowVolume(image, r.virtualLight.position, bounds);
+        VolumeGeometry v = volumeOf(image);
         v.alwaysZFail = true;
         if (!v.volume.empty()) r.shadows.push_back(std::move(v));
       }

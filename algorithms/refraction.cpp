@@ -1,5 +1,6 @@
 #include "algorithms/refraction.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "algorithms/quad_to_quad.hpp"
@@ -135,6 +136,13 @@ std::optional<RefractedView> refractedView(const ViewCamera& outer, const Camera
       if (!(std::fabs(i) > 0.0)) return std::nullopt;
       v.imageMap /= i;
       v.mapped = true;
+      // The map's denominator over the face's image in this camera (affine,
+      // so least at a corner): view_camera.hpp, depthScale.
+      for (const DVec2& c : from) {
+        const double den = v.imageMap[2][0] * c.x + v.imageMap[2][1] * c.y + v.imageMap[2][2];
+        if (!(den > 0.0)) return std::nullopt;
+        v.depthScale = std::min(v.depthScale, den);
+      }
     } catch (const DegenerateQuadError&) {
       return std::nullopt;
     }

@@ -65,9 +65,10 @@ std::uint64_t RenderPlan::predictedLightPasses() const {
   // drawn (one per level), one elsewhere.
   const std::uint64_t extraLevels =
       saturatingMul(static_cast<std::uint64_t>(darknessLights), static_cast<std::uint64_t>(darknessLevels - 1));
+  // Every view adds each light and each virtual light once (the virtual
+  // ones shadowed or not).
   const std::uint64_t base =
-      saturatingAdd(saturatingAdd(saturatingMul(predictedViews(), static_cast<std::uint64_t>(lights)),
-                                  saturatingMul(shadowedViews(*this), static_cast<std::uint64_t>(reflectedLights))),
+      saturatingAdd(saturatingMul(predictedViews(), static_cast<std::uint64_t>(lights + reflectedLights)),
                     saturatingMul(shadowedViews(*this), extraLevels));
   return saturatingAdd(base, saturatingMul(shadowedFaces(*this), static_cast<std::uint64_t>(lights)));
 }
@@ -116,9 +117,14 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   const int refLights = static_cast<int>(paths.size());
   p.shadows = scene.render.shadows && p.lights > 0 && (p.shadowCasters > 0 || refLights > 0);
   p.shadowDepth = p.shadows ? std::min(scene.render.shadowRecursionDepth, p.recursionDepth) : 0;
-  if (p.shadows) {
+  // Virtual lights light every view, shadowed where shadows are drawn and
+  // through their light volumes alone elsewhere (past shadow_recursion_depth,
+  // or with shadows off): their light is not lost (issue 43).
+  if (p.lights > 0) {
     p.reflectedLights = refLights;
     p.lightPathsOverLimit = overLimit;
+  }
+  if (p.shadows) {
     // Shadow generations (1997 eq. (7)'s unit): the light's own volumes,
     // and per virtual light its own shadows plus those carried from each
     // stretch of its path.
@@ -174,7 +180,7 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
                                    " faces (the longest found: " + std::to_string(p.longestLightPath) +
                                    "), each light volume stenciled once per face of its path"
                              : std::string())
-      << "), each with its light volume and shadows\n";
+      << "), each with its light volume" << (p.shadows ? " and shadows" : "") << "\n";
   if (p.lightPathsOverLimit)
     o << "  refused: more than " << kMaxLightPaths << " light paths (lower render.light_bounces)\n";
   if (p.reflections)

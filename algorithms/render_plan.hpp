@@ -37,6 +37,9 @@ struct RenderPlan {
   StencilLevels levels;
   std::vector<std::string> notes;  // what the planner left out and why
 
+  // The stencil is in use: shadow counts, recursion levels or light volumes.
+  bool usesStencil() const { return shadows || reflections || reflectedLights > 0; }
+
   // Exact counts for this implementation with culling off: views (scene
   // renderings: the camera plus every virtual camera), lit passes and
   // shadow-volume passes. The paper's estimates are given beside them. The

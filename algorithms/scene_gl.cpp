@@ -37,9 +37,11 @@ void SceneGL::setupView(const ViewCamera& cam) {
     // clip space through the inverse projection (as Mesa does), cannot be
     // used. MPR's default keeps Z: it is divided by the map's w, a positive
     // factor constant along each view ray, so the depth order and the
-    // depth-equal light passes still hold.
+    // depth-equal light passes still hold; scaled by the least w over the
+    // face's image (ViewCamera::depthScale) so that no depth inside the
+    // face passes the far plane.
     Mat4 m = quadToQuadMatrix4(cam.imageMap);
-    if (placement == RefractionMap::ProjectionKeptZ) m[2][2] = 1.0f;
+    if (placement == RefractionMap::ProjectionKeptZ) m[2][2] = static_cast<float>(cam.depthScale);
     gl_.multMatrixf(&m[0][0]);  // column by column, as GL reads it
   }
   gl_.perspective(static_cast<double>(c.fovY), aspect(), static_cast<double>(c.near), static_cast<double>(c.far));

@@ -27,11 +27,12 @@ RenderResult renderScene(const Scene& modelled, GLCommandStream& gl,
   // render.tessellation: lit faces split for per-vertex lighting, on a copy
   // (the scene as modelled is what the reference traces).
   Scene tessellated;
-  if (modelled.render.tessellation > 0.0f) {
+  const bool tessellate = modelled.render.tessellation != 0.0f;
+  if (tessellate) {
     tessellated = modelled;
     tessellateLitObjects(tessellated, modelled.render.tessellation);
   }
-  const Scene& scene = modelled.render.tessellation > 0.0f ? tessellated : modelled;
+  const Scene& scene = tessellate ? tessellated : modelled;
   RenderResult r;
   r.plan = planRender(scene, cull);
   const std::uint64_t predicted = r.plan.predictedViews() * static_cast<std::uint64_t>(r.plan.images);

@@ -10,8 +10,8 @@ namespace mpr {
 
 ShadowRole shadowRole(const SceneObject& o, const Scene& scene) {
   const SceneMaterial& m = scene.materials[static_cast<std::size_t>(o.material)];
-  if (!isRefMaterial(m, scene.render)) return o.castsShadows ? ShadowRole::Caster : ShadowRole::None;
-  return refracts(m.kind) ? ShadowRole::RefractingFace : ShadowRole::None;
+  if (!o.castsShadows) return ShadowRole::None;
+  return isRefMaterial(m, scene.render) ? ShadowRole::SpecularFace : ShadowRole::Caster;
 }
 
 ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : ShadowPass(scene, plan, false) {}
@@ -34,16 +34,17 @@ ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan, bool pivotBas
         if (role == ShadowRole::None) continue;
         // Glass has two sides: a refracting face lit from behind shadows the
         // direct light as one lit from the front does (issue 12, bug 1: the
-        // floor beyond it got the direct light and the light passed through).
-        VolumeGeometry v = role == ShadowRole::RefractingFace ? twoSidedShadowVolume(o, at, bounds)
+        // floor beyond it got the direct light and the light passed through);
+        // so does the back of a mirror.
+        VolumeGeometry v = role == ShadowRole::SpecularFace ? twoSidedShadowVolume(o, at, bounds)
                                                               : objectShadowVolume(o, at, bounds);
         if (!v.closed && l == 0 && i == 0 && role == ShadowRole::Caster)
           warnings_.push_back("object '" + o.name + "' (line " + std::to_string(o.line) +
                               ") is not a closed mesh: its shadow volume is open and may count wrongly");
-        // A refracting face is not in the depth buffer (the view through it is),
+        // A specular face is not in the depth buffer (the view through it is),
         // so a ray through it enters its volume by the light cap unseen, which
         // z-pass does not count: counted behind the surface with caps instead.
-        v.alwaysZFail = role == ShadowRole::RefractingFace;
+        v.alwaysZFail = role == ShadowRole::SpecularFace;
         v.objectIndex = static_cast<int>(oi);
         if (pivotBase && light.radius > 0.0f) {
           v.volume = pivotBaseVolume(v.volume, light.radius);

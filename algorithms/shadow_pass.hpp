@@ -47,12 +47,15 @@ std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& 
                            bool inverted, bool alwaysZFail = false, bool volumeByVolume = false);
 
 // What an object does in draw_all_shadows (make_all_shadows(ALWAYS)): a
-// caster (casts_shadows, not specular); a refracting face, whose light goes
-// on only through its light volume (draw_ref_shadows), so it shadows the
-// direct light like any caster ("the second pass ... captures the shadow
-// effect caused by the refractive surface itself", 1994 "Refractive
-// shadows"); or nothing (mirrors, non-casters).
-enum class ShadowRole { None, Caster, RefractingFace };
+// caster (casts_shadows, not specular); a specular face (a mirror, a
+// refracting face), whose light goes on only through its light volume
+// (draw_ref_shadows), so it shadows the direct light like any caster ("the
+// second pass ... captures the shadow effect caused by the refractive
+// surface itself", 1994 "Refractive shadows"; a mirror is opaque: what lies
+// behind it gets none of the light it reflects); or nothing (casts_shadows
+// false). A specular face is not in the depth buffer where its shadows are
+// counted (the view through it is) and has two sides.
+enum class ShadowRole { None, Caster, SpecularFace };
 ShadowRole shadowRole(const SceneObject& object, const Scene& scene);
 
 class ShadowPass {

@@ -23,6 +23,12 @@ struct ViewCamera {
   // (with Z kept, see draw_window.cpp).
   bool mapped = false;
   DMat3 imageMap{1.0};
+  // With Z kept, depth is divided by the map's w (its denominator); where
+  // that is below 1 a point short of the far plane lands past it and is
+  // clipped away (a pane turned -20 degrees showed black, issue 43). Z is
+  // scaled by the smallest denominator over the face's image, so every
+  // point inside the face keeps a depth within [-1, 1], in the same order.
+  double depthScale = 1.0;
   // Seen through a translucent face (1994 "Object attributes and
   // translucency"): linear fog from the face's distance (clear) to
   // fog_distance behind it (the material's colour).

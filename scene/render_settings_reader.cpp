@@ -76,8 +76,10 @@ void readRenderSettings(const SceneNodeReader& in, const YAML::Node& n, RenderSe
     r.profile = in.string(n["profile"], "render.profile");
     if (!findProfile(r.profile)) in.fail(n["profile"], "unknown profile '" + r.profile + "' (known: indigo, mesa)");
   }
-  if (n["tessellation"])
-    r.tessellation = static_cast<float>(in.number(n["tessellation"], "render.tessellation", 0.0, 1e6));
+  if (n["tessellation"]) {
+    if (n["tessellation"].IsScalar() && n["tessellation"].Scalar() == "auto") r.tessellation = kAutoTessellation;
+    else r.tessellation = static_cast<float>(in.number(n["tessellation"], "render.tessellation", 0.0, 1e6));
+  }
   if (n["refraction_map"]) {
     const std::string m = in.string(n["refraction_map"], "render.refraction_map");
     if (m == "projection") r.refractionMap = RefractionMap::ProjectionKeptZ;
@@ -92,10 +94,11 @@ void readRenderSettings(const SceneNodeReader& in, const YAML::Node& n, RenderSe
 void checkRenderLimits(const SceneNodeReader& in, const YAML::Node& doc, const Scene& s) {
   // render.tessellation splits lit faces at render time: the scene it
   // makes is held to the same budget as the one the file describes.
-  if (s.render.tessellation > 0.0f) {
+  if (s.render.tessellation != 0.0f) {
     const std::uint64_t n = tessellatedTriangleCount(s, s.render.tessellation);
+    const YAML::Node key = doc["render"] && doc["render"]["tessellation"] ? doc["render"]["tessellation"] : doc;
     if (n > kMaxSceneTriangles)
-      in.fail(doc["render"]["tessellation"], "render.tessellation " + doc["render"]["tessellation"].Scalar() +
+      in.fail(key, "render.tessellation " + (key == doc ? std::string("auto") : key.Scalar()) +
                                                  " would split the lit faces into " + std::to_string(n) +
                                                  " triangles, more than the " + std::to_string(kMaxSceneTriangles) +
                                                  " a scene may hold (about 3 GB of mesh); raise it or simplify the scene");

@@ -90,6 +90,9 @@ enum class RefractionMap { ProjectionKeptZ, ProjectionZeroedZ, EndOfPipeline };
 // centre and only their far ends moved per sample, Fig. 7).
 enum class SoftShadowMethod { Images, DarknessLevels, Pivot };
 
+// render.tessellation: auto (scene/tessellation.hpp, tessellateLitObjects).
+inline constexpr float kAutoTessellation = -1.0f;
+
 struct RenderSettings {
   int width = 640, height = 480;
   int recursionDepth = 2;        // mirror/refraction levels
@@ -105,8 +108,10 @@ struct RenderSettings {
   std::string profile = "indigo";
   RefractionMap refractionMap = RefractionMap::ProjectionKeptZ;
   // The longest edge of a lit triangle the pipeline draws (world units): the
-  // planner splits larger ones for GL's per-vertex lighting (0: as modelled).
-  float tessellation = 0.0f;
+  // planner splits larger ones for GL's per-vertex lighting (0: as modelled;
+  // kAutoTessellation, the default: relative to each object's distance to
+  // the nearest light, scene/tessellation.hpp).
+  float tessellation = kAutoTessellation;
 };
 
 // One entry of the scene's `expect:` list (docs/scene-format.md,

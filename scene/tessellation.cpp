@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace mpr {
@@ -12,6 +13,11 @@ bool lexicallyLess(const Vec3& a, const Vec3& b) { return std::tie(a.x, a.y, a.z
 // The point m/k of the way along the edge (u, v), the same from either end.
 Vec3 edgePoint(Vec3 u, Vec3 v, int m, int k) {
   if (lexicallyLess(v, u)) std::swap(u, v), m = k - m;
+  // The ends themselves, exactly: u + (v - u) * 1 need not round to v, and
+  // a corner off by an ulp opens the mesh (a tessellated box's shadow
+  // volume was counted as open).
+  if (m == 0) return u;
+  if (m == k) return v;
   const float t = static_cast<float>(m) / static_cast<float>(k);
   return u + (v - u) * t;
 }
@@ -53,13 +59,33 @@ void splitTriangle(const Mesh& in, const std::array<std::uint32_t, 3>& t, int k,
     }
 }
 
+// Auto: the object's longest edge over its bounding box's distance to the
+// nearest light (a lower bound of every edge's: the ratio errs on the side
+// of more splits, and costs one pass over the edges and one per light).
+double longestEdgeOverLightDistance(const Scene& scene, const Mesh& mesh, float longest) {
+  Vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+  for (const Vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const PointLight& l : scene.lights) {
+    const DVec3 p(l.position);
+    nearest = std::min(nearest, glm::length(p - glm::clamp(p, DVec3(lo), DVec3(hi))));
+  }
+  if (scene.lights.empty()) return 0.0;
+  return nearest > 0.0 ? static_cast<double>(longest) / nearest : std::numeric_limits<double>::infinity();
+}
+
 // The k an object's edges are divided into (1: the object is kept as it is).
 int divisions(const Scene& scene, const SceneObject& o, float maxEdge) {
-  if (!(maxEdge > 0.0f)) return 1;
+  if (!(maxEdge > 0.0f) && maxEdge != kAutoTessellation) return 1;
   if (scene.materials[static_cast<std::size_t>(o.material)].specularKind() || o.mesh.triangles.empty()) return 1;
   // Compared as a float first: a huge or NaN ratio must not reach the int.
-  const float wanted = std::ceil(longestEdge(o.mesh) / maxEdge);
-  int k = wanted >= kMaxTessellationDivisions ? kMaxTessellationDivisions : wanted >= 1.0f ? static_cast<int>(wanted) : 1;
+  const float wanted =
+      maxEdge == kAutoTessellation
+          ? static_cast<float>(std::ceil(longestEdgeOverLightDistance(scene, o.mesh, longestEdge(o.mesh)) /
+                                         kAutoEdgeOverLightDistance))
+          : std::ceil(longestEdge(o.mesh) / maxEdge);
+  const int most = maxEdge == kAutoTessellation ? kMaxAutoTessellationDivisions : kMaxTessellationDivisions;
+  int k = wanted >= static_cast<float>(most) ? most : wanted >= 1.0f ? static_cast<int>(wanted) : 1;
   while (k > 1 && o.mesh.triangles.size() * static_cast<std::size_t>(k) * k > kMaxTessellatedTriangles) --k;
   return k;
 }

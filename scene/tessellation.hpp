@@ -15,9 +15,24 @@ namespace mpr {
 inline constexpr int kMaxTessellationDivisions = 64;
 inline constexpr std::size_t kMaxTessellatedTriangles = 2'000'000;
 
+// render.tessellation auto (the default): GL lights a triangle at its
+// corners and interpolates (Gouraud); how far that strays from the light at
+// each point grows with an edge's length over its distance to the light
+// (the angle it subtends from the light). Auto splits an object until its
+// longest edge is at most this share of the distance from its bounding box
+// to the nearest light. Chosen
+// by the accuracy tables (docs/explanation/accuracy.md): the sample scenes'
+// error falls with the share down to about 1/4 and hardly below it.
+inline constexpr double kAutoEdgeOverLightDistance = 0.25;
+// Auto never splits one triangle into more than 16 x 16: a light almost on
+// a large face would ask for the most divisions everywhere, at a cost the
+// default must not pay unasked (a number given asks for up to 64).
+inline constexpr int kMaxAutoTessellationDivisions = 16;
+
 // Splits every triangle of every diffuse object into k x k triangles, one k
 // per object: the smallest with every edge of the object at most `maxEdge`
-// long after the split. A point on an edge is computed from the edge's two
+// long after the split (kAutoTessellation: at most
+// kAutoEdgeOverLightDistance of the object's distance to the nearest light). A point on an edge is computed from the edge's two
 // ends in a fixed (lexicographic) order, so triangles sharing an edge share
 // its points bit for bit: no cracks, no T-junctions. Specular objects keep
 // their faces (the recursion looks through them as polygons).

@@ -71,7 +71,7 @@ Scene transformed(const Scene& in, const std::function<Vec3(Vec3)>& point, const
     l.radius *= scale;
   }
   for (SceneMaterial& m : s.materials) m.fogDistance *= scale;
-  s.render.tessellation *= scale;
+  if (s.render.tessellation > 0.0f) s.render.tessellation *= scale;  // a length; auto is relative already
   return s;
 }
 
