@@ -151,26 +151,18 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
                                                   Vec3(path.lights[k - 1]), bounds));
     for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
       const SceneObject& o = scene.objects[oi];
-      if (!o.castsShadows) continue;
+      const ShadowRole role = shadowRole(o, scene);
+      if (role == ShadowRole::None) continue;
       // The faces the light passed pass it on (their light volumes); every
       // other specular face blocks it as any caster does (a second mirror
       // between the first and the floor: issue 43).
       bool onPath = false;
       for (const int fi : path.faces) onPath = onPath || faces[static_cast<std::size_t>(fi)].object == static_cast<int>(oi);
       if (onPath) continue;
-      // A specular caster has two sides and is not in the depth buffer
-      // (shadow_pass.hpp, ShadowRole::SpecularFace).
-      const bool specular = isRefMaterial(scene.materials[static_cast<std::size_t>(o.material)], scene.render);
-      const auto volumeOf = [&](const SceneObject& caster) {
-        VolumeGeometry v = specular ? twoSidedShadowVolume(caster, r.virtualLight.position, bounds)
-                                    : objectShadowVolume(caster, r.virtualLight.position, bounds);
-        v.alwaysZFail = specular;
-        return v;
-      };
       // CAN'T_INTERSECT: the object stands where the light goes on from the
       // last face.
       if (whollyOnSide(o.mesh, f, outgoingSide(f, path.lights[k - 1]), touch)) {
-        VolumeGeometry v = volumeOf(o);
+        VolumeGeometry v = casterShadowVolume(o, role, r.virtualLight.position, bounds);
         if (!v.volume.empty()) r.shadows.push_back(std::move(v));
       }
       // MUST_INTERSECT, for every stretch of the path: between the light (or
@@ -194,7 +186,7 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
         for (Vec3& p : image.mesh.positions) p = Vec3(carryAlongPath(path, faces, i, DVec3(p)));
         if (carryTurnsWinding(path, faces, i))
           for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
-        VolumeGeometry v = volumeOf(image);
+        VolumeGeometry v = casterShadowVolume(image, role, r.virtualLight.position, bounds);
         v.alwaysZFail = true;
         if (!v.volume.empty()) r.shadows.push_back(std::move(v));
       }

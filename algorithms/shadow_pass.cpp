@@ -14,6 +14,20 @@ ShadowRole shadowRole(const SceneObject& o, const Scene& scene) {
   return isRefMaterial(m, scene.render) ? ShadowRole::SpecularFace : ShadowRole::Caster;
 }
 
+VolumeGeometry casterShadowVolume(const SceneObject& o, ShadowRole role, Vec3 light, const BoundingSphere& receivers) {
+  // Glass has two sides: a refracting face lit from behind shadows the
+  // direct light as one lit from the front does (issue 12, bug 1: the floor
+  // beyond it got the direct light and the light passed through); so does
+  // the back of a mirror.
+  const bool specular = role == ShadowRole::SpecularFace;
+  VolumeGeometry v = specular ? twoSidedShadowVolume(o, light, receivers) : objectShadowVolume(o, light, receivers);
+  // A specular face is not in the depth buffer (the view through it is), so
+  // a ray through it enters its volume by the light cap unseen, which z-pass
+  // does not count: counted behind the surface with caps instead.
+  v.alwaysZFail = specular;
+  return v;
+}
+
 ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan) : ShadowPass(scene, plan, false) {}
 
 ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan, bool pivotBase) : scene_(scene) {
@@ -32,19 +46,10 @@ ShadowPass::ShadowPass(const Scene& scene, const RenderPlan& plan, bool pivotBas
         const SceneObject& o = scene.objects[oi];
         const ShadowRole role = shadowRole(o, scene);
         if (role == ShadowRole::None) continue;
-        // Glass has two sides: a refracting face lit from behind shadows the
-        // direct light as one lit from the front does (issue 12, bug 1: the
-        // floor beyond it got the direct light and the light passed through);
-        // so does the back of a mirror.
-        VolumeGeometry v = role == ShadowRole::SpecularFace ? twoSidedShadowVolume(o, at, bounds)
-                                                              : objectShadowVolume(o, at, bounds);
+        VolumeGeometry v = casterShadowVolume(o, role, at, bounds);
         if (!v.closed && l == 0 && i == 0 && role == ShadowRole::Caster)
           warnings_.push_back("object '" + o.name + "' (line " + std::to_string(o.line) +
                               ") is not a closed mesh: its shadow volume is open and may count wrongly");
-        // A specular face is not in the depth buffer (the view through it is),
-        // so a ray through it enters its volume by the light cap unseen, which
-        // z-pass does not count: counted behind the surface with caps instead.
-        v.alwaysZFail = role == ShadowRole::SpecularFace;
         v.objectIndex = static_cast<int>(oi);
         if (pivotBase && light.radius > 0.0f) {
           v.volume = pivotBaseVolume(v.volume, light.radius);

@@ -58,6 +58,12 @@ std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& 
 enum class ShadowRole { None, Caster, SpecularFace };
 ShadowRole shadowRole(const SceneObject& object, const Scene& scene);
 
+// The volume of `object` in its role (not None) from `light`: a specular
+// face's two-sided and counted by z-fail. Shared by draw_all_shadows and
+// the virtual lights' casters (ref_light.cpp).
+VolumeGeometry casterShadowVolume(const SceneObject& object, ShadowRole role, Vec3 light,
+                                  const BoundingSphere& receivers);
+
 class ShadowPass {
  public:
   ShadowPass(const Scene& scene, const RenderPlan& plan);

@@ -112,11 +112,12 @@ class ObjectReader {
       }
       o.material = it->second;
     }
+    const bool specular = s.materials[static_cast<std::size_t>(o.material)].specularKind();
     if (n["casts_shadows"]) o.castsShadows = in.boolean(n["casts_shadows"], where + " casts_shadows");
     // A mirror or a pane is opaque to the direct light whatever its
     // primitive: quads and planes cast no shadow by default only as walls.
-    else if (s.materials[static_cast<std::size_t>(o.material)].specularKind()) o.castsShadows = true;
-    if (s.materials[static_cast<std::size_t>(o.material)].specularKind()) checkPlanarFaces(n, o, where);
+    else if (specular) o.castsShadows = true;
+    if (specular) checkPlanarFaces(n, o, where);
     return o;
   }
 

@@ -63,6 +63,7 @@ void splitTriangle(const Mesh& in, const std::array<std::uint32_t, 3>& t, int k,
 // nearest light (a lower bound of every edge's: the ratio errs on the side
 // of more splits, and costs one pass over the edges and one per light).
 double longestEdgeOverLightDistance(const Scene& scene, const Mesh& mesh, float longest) {
+  if (scene.lights.empty()) return 0.0;
   Vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
   for (const Vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   double nearest = std::numeric_limits<double>::infinity();
@@ -70,7 +71,6 @@ double longestEdgeOverLightDistance(const Scene& scene, const Mesh& mesh, float 
     const DVec3 p(l.position);
     nearest = std::min(nearest, glm::length(p - glm::clamp(p, DVec3(lo), DVec3(hi))));
   }
-  if (scene.lights.empty()) return 0.0;
   return nearest > 0.0 ? static_cast<double>(longest) / nearest : std::numeric_limits<double>::infinity();
 }
 
