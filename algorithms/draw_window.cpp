@@ -16,6 +16,7 @@
 #include "algorithms/draw_window.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 #include "algorithms/apply_stencil.hpp"
@@ -360,7 +361,30 @@ class WindowRenderer {
     v.clipPlane = DVec4(face.normal, -face.offset);
     v.throughFace = f;
     v.level = level;
+    v.near = mirrorNear(cam, face);
     return v;
+  }
+
+  // Everything a mirror's view shows lies beyond the mirror's plane (its
+  // clip plane) and inside the face's image, so nothing in it is nearer the
+  // eye, along the view axis, than the face's nearest corner: the view's
+  // near plane moves out to that corner (0: the camera's own, when that is
+  // as far, a corner is behind the eye, or the view is mapped). The depth
+  // buffer's resolution then serves what the mirror shows: with a camera
+  // 1e-6 before a mirror and near 1e-7, every reflected object lay within
+  // 3 of 2^24 depth steps and their order turned on a rounding (issue 43).
+  // The margin keeps the face's own plane inside the frustum.
+  double mirrorNear(const ViewCamera& cam, const RefFace& face) const {
+    if (cam.mapped) return 0.0;
+    const Camera& c = s_.camera;
+    const DVec3 eye(c.position), forward = glm::normalize(DVec3(c.lookAt) - eye);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Vec3& corner : face.polygon) {
+      const DVec4 q = cam.world * DVec4(DVec3(corner), 1.0);
+      nearest = std::min(nearest, glm::dot(DVec3(q) / q.w - eye, forward));
+    }
+    const double near = nearest * (1.0 - 1e-3);
+    return near > static_cast<double>(c.near) ? near : 0.0;
   }
 
   // ---- draw_normal_objects(Camera, STEN_VALUE) ----------------------------

@@ -44,7 +44,7 @@ void SceneGL::setupView(const ViewCamera& cam) {
     if (placement == RefractionMap::ProjectionKeptZ) m[2][2] = static_cast<float>(cam.depthScale);
     gl_.multMatrixf(&m[0][0]);  // column by column, as GL reads it
   }
-  gl_.perspective(static_cast<double>(c.fovY), aspect(), static_cast<double>(c.near), static_cast<double>(c.far));
+  gl_.perspective(static_cast<double>(c.fovY), aspect(), cam.nearOf(c), static_cast<double>(c.far));
   if (sample_.lens != DVec2(0.0)) {
     // Depth of field: the eye moved to the lens point (a, b) in eye space and
     // the frustum sheared so that the plane at the focal distance f stays

@@ -4,6 +4,7 @@
 
 #include "algorithms/image_samples.hpp"
 #include "algorithms/shadow_pass.hpp"
+#include "scene/camera_origin.hpp"
 #include "scene/tessellation.hpp"
 
 namespace mpr {
@@ -24,15 +25,19 @@ void addCounts(DrawWindowCounts& total, const DrawWindowCounts& c) {
 
 RenderResult renderScene(const Scene& modelled, GLCommandStream& gl,
                          const std::function<void(const RenderProgress&)>& progress, bool cull) {
-  // render.tessellation: lit faces split for per-vertex lighting, on a copy
-  // (the scene as modelled is what the reference traces).
-  Scene tessellated;
+  // On a copy (the scene as modelled is what the reference traces): the
+  // scene relative to its camera (camera-relative rendering, issue 43: the
+  // float pipeline sees small numbers wherever the scene lies), then its
+  // lit faces split for per-vertex lighting (render.tessellation).
+  Scene drawn;
   const bool tessellate = modelled.render.tessellation != 0.0f;
-  if (tessellate) {
-    tessellated = modelled;
-    tessellateLitObjects(tessellated, modelled.render.tessellation);
+  const bool moved = modelled.camera.position != Vec3(0.0f);
+  if (tessellate || moved) {
+    drawn = modelled;
+    moveOriginToCamera(drawn);
+    if (tessellate) tessellateLitObjects(drawn, modelled.render.tessellation);
   }
-  const Scene& scene = tessellate ? tessellated : modelled;
+  const Scene& scene = tessellate || moved ? drawn : modelled;
   RenderResult r;
   r.plan = planRender(scene, cull);
   const std::uint64_t predicted = r.plan.predictedViews() * static_cast<std::uint64_t>(r.plan.images);

@@ -95,7 +95,9 @@ std::uint64_t countVolumes(GLApi& gl, const std::vector<const VolumeGeometry*>& 
   // Volumes the near plane cuts are counted behind the surface (z-fail);
   // the eye and the near rectangle are taken into the real scene, where the
   // volumes are.
-  const std::array<Vec3, 4> near = nearRectangle(camera, view.world, aspect);
+  Camera projected = camera;
+  projected.near = static_cast<float>(view.nearOf(camera));
+  const std::array<Vec3, 4> near = nearRectangle(projected, view.world, aspect);
   const DVec3 eye = view.eye(camera);
   std::vector<const VolumeGeometry*> zpass, zfail;
   for (const VolumeGeometry* v : vols)

@@ -29,6 +29,11 @@ struct ViewCamera {
   // scaled by the smallest denominator over the face's image, so every
   // point inside the face keeps a depth within [-1, 1], in the same order.
   double depthScale = 1.0;
+  // > 0: this view's near plane, in place of the camera's (a mirror's view:
+  // draw_window.cpp, mirrorNear). The projection and the near rectangle the
+  // shadow volumes' z-fail choice uses both take it.
+  double near = 0.0;
+  double nearOf(const Camera& c) const { return near > 0.0 ? near : static_cast<double>(c.near); }
   // Seen through a translucent face (1994 "Object attributes and
   // translucency"): linear fog from the face's distance (clear) to
   // fog_distance behind it (the material's colour).

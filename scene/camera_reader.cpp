@@ -3,6 +3,7 @@
 #include <sstream>
 #include <string>
 
+#include "scene/camera_origin.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/scene_section_readers.hpp"
 
@@ -29,10 +30,13 @@ float fieldOfView(const SceneNodeReader& in, const YAML::Node& n) {
 
 }  // namespace
 
-void readCamera(const SceneNodeReader& in, const YAML::Node& n, Camera& c) {
+DVec3 readCamera(const SceneNodeReader& in, const YAML::Node& n, Camera& c) {
   in.checkKeys(n, scene_format::kCameraKeys, "camera");
-  if (n["position"]) c.position = in.vec3(n["position"], "camera.position");
-  if (n["look_at"]) c.lookAt = in.vec3(n["look_at"], "camera.look_at");
+  const DVec3 eye = n["position"] ? in.dvec3(n["position"], "camera.position") : DVec3(c.position);
+  const DVec3 origin = loadingOrigin(eye);
+  c.position = Vec3(eye - origin);
+  if (n["look_at"]) c.lookAt = Vec3(in.dvec3(n["look_at"], "camera.look_at") - origin);
+  else c.lookAt = Vec3(DVec3(c.lookAt) - origin);
   if (n["up"]) c.up = in.vec3(n["up"], "camera.up");
   if (n["fov"]) c.fovY = fieldOfView(in, n["fov"]);
   if (n["near"]) c.near = static_cast<float>(in.number(n["near"], "camera.near", 0.0, 1e30, true));
@@ -52,6 +56,7 @@ void readCamera(const SceneNodeReader& in, const YAML::Node& n, Camera& c) {
   const Vec3 f = c.lookAt - c.position;
   const Vec3 side = glm::cross(f, c.up);
   if (glm::dot(side, side) == 0.0f) in.fail(n["up"] ? n["up"] : n, "camera.up must not be parallel to the view direction");
+  return origin;
 }
 
 }  // namespace mpr

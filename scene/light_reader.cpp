@@ -6,11 +6,11 @@
 namespace mpr {
 namespace {
 
-PointLight readLight(const SceneNodeReader& in, const YAML::Node& n) {
+PointLight readLight(const SceneNodeReader& in, const YAML::Node& n, DVec3 origin) {
   in.checkKeys(n, scene_format::kLightKeys, "a light");
   PointLight l;
   if (!n["position"]) in.fail(n, "a light needs a position");
-  l.position = in.vec3(n["position"], "light position");
+  l.position = Vec3(in.dvec3(n["position"], "light position") - origin);
   if (n["color"]) l.color = in.rgb(n["color"], "light color");
   if (n["attenuation"]) {
     l.attenuation = in.rgb(n["attenuation"], "light attenuation");
@@ -22,10 +22,10 @@ PointLight readLight(const SceneNodeReader& in, const YAML::Node& n) {
 
 }  // namespace
 
-void readLights(const SceneNodeReader& in, const YAML::Node& list, std::vector<PointLight>& lights) {
+void readLights(const SceneNodeReader& in, const YAML::Node& list, DVec3 origin, std::vector<PointLight>& lights) {
   if (!list.IsSequence()) in.fail(list, "lights must be a list");
   in.checkCount(list, "lights", kMaxSceneLights);
-  for (const YAML::Node& l : list) lights.push_back(readLight(in, l));
+  for (const YAML::Node& l : list) lights.push_back(readLight(in, l, origin));
 }
 
 }  // namespace mpr

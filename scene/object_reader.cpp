@@ -82,9 +82,11 @@ class ObjectReader {
     }
     triangles += o.mesh.triangles.size();
     Mat4 m(1.0f);
-    if (n["translate"]) m = multiply(m, translationMatrix(in.vec3(n["translate"], where + " translate").x,
-                                                           in.vec3(n["translate"], where + " translate").y,
-                                                           in.vec3(n["translate"], where + " translate").z));
+    // The translation relative to the scene's origin, in double before it is
+    // a float (scene/camera_origin.hpp); as written when the origin is 0.
+    const Vec3 t(
+        (n["translate"] ? in.dvec3(n["translate"], where + " translate") : DVec3(0.0)) - s.origin);
+    if (n["translate"] || t != Vec3(0.0f)) m = multiply(m, translationMatrix(t.x, t.y, t.z));
     if (n["rotate"]) {
       const YAML::Node r = n["rotate"];
       if (!r.IsSequence() || r.size() != 4) in.fail(r, where + " rotate must be [degrees, x, y, z]");

@@ -131,6 +131,11 @@ struct SceneExpectation {
 
 struct Scene {
   std::string file;
+  // Where the model's zero lies in the file's world (scene/camera_origin.hpp):
+  // every position above is relative to it, so that the float pipeline sees
+  // small numbers in a scene far from the world's origin. (0, 0, 0) unless
+  // the loader or the renderer moved it to the camera.
+  DVec3 origin{0.0};
   Camera camera;
   Vec3 ambient{0.1f, 0.1f, 0.1f};
   std::vector<PointLight> lights;

@@ -28,9 +28,9 @@ Scene readScene(const SceneNodeReader& in, YAML::Node doc, bool confine) {
   if (doc.IsNull()) doc = YAML::Node(YAML::NodeType::Map);
   in.checkKeys(doc, scene_format::kTopKeys, "the scene");
   if (const YAML::Node r = doc["render"]) readRenderSettings(in, r, s.render);
-  if (const YAML::Node c = doc["camera"]) readCamera(in, c, s.camera);
+  if (const YAML::Node c = doc["camera"]) s.origin = readCamera(in, c, s.camera);
   if (const YAML::Node a = doc["ambient"]) s.ambient = in.rgb(a, "ambient");
-  if (const YAML::Node ls = doc["lights"]) readLights(in, ls, s.lights);
+  if (const YAML::Node ls = doc["lights"]) readLights(in, ls, s.origin, s.lights);
   std::map<std::string, int> materialIndex;
   s.materials.push_back(SceneMaterial{"default"});
   if (const YAML::Node ms = doc["materials"]) materialIndex = readMaterials(in, ms, s.materials);

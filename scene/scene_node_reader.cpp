@@ -146,10 +146,11 @@ std::string SceneNodeReader::string(const YAML::Node& n, const std::string& what
   return n.Scalar();
 }
 
-Vec3 SceneNodeReader::vec3(const YAML::Node& n, const std::string& what) const {
+Vec3 SceneNodeReader::vec3(const YAML::Node& n, const std::string& what) const { return Vec3(dvec3(n, what)); }
+
+DVec3 SceneNodeReader::dvec3(const YAML::Node& n, const std::string& what) const {
   if (!n.IsSequence() || n.size() != 3) fail(n, what + " must be a list of 3 numbers, like [0, 1, 0]");
-  return Vec3(static_cast<float>(number(n[0], what + "[0]")), static_cast<float>(number(n[1], what + "[1]")),
-              static_cast<float>(number(n[2], what + "[2]")));
+  return DVec3(number(n[0], what + "[0]"), number(n[1], what + "[1]"), number(n[2], what + "[2]"));
 }
 
 Vec3 SceneNodeReader::rgb(const YAML::Node& n, const std::string& what) const {

@@ -49,6 +49,9 @@ class SceneNodeReader {
   bool boolean(const YAML::Node& n, const std::string& what) const;
   std::string string(const YAML::Node& n, const std::string& what) const;
   Vec3 vec3(const YAML::Node& n, const std::string& what) const;
+  // A position as written, in double: kept so until it is made relative to
+  // the scene's origin (scene/camera_origin.hpp).
+  DVec3 dvec3(const YAML::Node& n, const std::string& what) const;
   Vec3 rgb(const YAML::Node& n, const std::string& what) const;  // a vec3 >= 0
 
  private:

@@ -19,15 +19,17 @@ namespace mpr {
 
 // render: image size, recursion, effects, hardware profile.
 void readRenderSettings(const SceneNodeReader& in, const YAML::Node& n, RenderSettings& r);
-// camera: the viewer.
-void readCamera(const SceneNodeReader& in, const YAML::Node& n, Camera& c);
-// lights: point lights (at most kMaxSceneLights).
-void readLights(const SceneNodeReader& in, const YAML::Node& list, std::vector<PointLight>& lights);
+// camera: the viewer. Gives the scene's origin (scene/camera_origin.hpp):
+// the positions read from here on are made relative to it.
+DVec3 readCamera(const SceneNodeReader& in, const YAML::Node& n, Camera& c);
+// lights: point lights (at most kMaxSceneLights), relative to `origin`.
+void readLights(const SceneNodeReader& in, const YAML::Node& list, DVec3 origin, std::vector<PointLight>& lights);
 // materials: named materials, appended to `materials`; gives each name's index there.
 std::map<std::string, int> readMaterials(const SceneNodeReader& in, const YAML::Node& map,
                                          std::vector<SceneMaterial>& materials);
 // objects: primitives and meshes (at most kMaxSceneObjects, kMaxSceneTriangles
-// in all), placed and given their materials (`materials`: readMaterials' index).
+// in all), placed (relative to s.origin) and given their materials
+// (`materials`: readMaterials' index).
 // `confine`: meshes only from inside the scene's folder (mpr render --confine).
 void readObjects(const SceneNodeReader& in, const YAML::Node& list, const std::map<std::string, int>& materials,
                  bool confine, Scene& s);

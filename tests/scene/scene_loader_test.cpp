@@ -56,6 +56,31 @@ render: {width: 32, height: 24, recursion_depth: 3, profile: mesa, shadows: fals
   EXPECT_FALSE(s.render.shadows);
 }
 
+// Far from the world's origin (scene/camera_origin.hpp): positions are kept
+// in double until made relative to the camera, so the model holds them as
+// exactly as at the origin; near it the file's numbers are kept as written.
+TEST(SceneLoader, AFarSceneIsHeldRelativeToItsCamera) {
+  const Scene far = loadSceneText(R"(
+camera: {position: [1000000.25, 2000000.5, -3000000.75], look_at: [1000000.25, 2000000.5, -3000010.75]}
+lights: [{position: [1000001.5, 2000003.3, -3000002.75]}]
+objects: [{primitive: box, translate: [1000000.35, 2000000.5, -3000005.75], scale: 2}]
+)", "s.yaml");
+  EXPECT_EQ(far.origin, DVec3(1000000.25, 2000000.5, -3000000.75));
+  EXPECT_EQ(far.camera.position, Vec3(0.0f));
+  EXPECT_EQ(far.camera.lookAt, Vec3(0.0f, 0.0f, -10.0f));
+  // 2000003.3 - 2000000.5 in double is 2.8 up to 2e-10: the float nearest
+  // 2.8 (as a float, 2000003.3 would be 2000003.25 and the light 0.05 off).
+  EXPECT_EQ(far.lights[0].position, Vec3(1.25f, 2.8f, -2.0f));
+  float minX = 1e9f, maxX = -1e9f;
+  for (const Vec3& p : far.objects[0].mesh.positions) minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
+  EXPECT_EQ(minX, -0.9f);
+  EXPECT_EQ(maxX, 1.1f);
+  const Scene near = loadSceneText("camera: {position: [1000, 2, 3]}\nlights: [{position: [1000.1, 3, 1]}]\n", "s.yaml");
+  EXPECT_EQ(near.origin, DVec3(0.0));
+  EXPECT_EQ(near.camera.position, Vec3(1000.0f, 2.0f, 3.0f));
+  EXPECT_EQ(near.lights[0].position, Vec3(1000.1f, 3.0f, 1.0f));
+}
+
 TEST(SceneLoader, OverridesApplyBeforeValidation) {
   const Scene s = loadSceneText("render: {width: 64}\n", "s.yaml", {"render.width=20", "render.height=10", "camera.fov=30"});
   EXPECT_EQ(s.render.width, 20);
