@@ -12,12 +12,13 @@
 //
 // - Mirror: the virtual light is the light reflected through the face's
 //   plane; the light volume lies on the light's side.
-// - Refracting face (the paper's change-of-medium model): the light turned
-//   about the face centre, in the plane of incidence, by theta_i - theta_t,
-//   the single-angle rule the refracted camera uses, with the ray from the
-//   light to the face centre as the incident ray (a point light has no view
-//   axis); past the critical angle no light passes. The light volume lies
-//   beyond the face.
+// - Refracting face (the paper's change-of-medium model): the light moved
+//   onto the refracted ray through the face centre (the ray from the light
+//   to the centre as the incident ray: a point light has no view axis), to
+//   its paraxial image: where that ray, extended back, meets the light's
+//   perpendicular to the face, at the light's distance times
+//   n_other / n_light; past the critical angle no light passes. The light
+//   volume lies beyond the face.
 #include <optional>
 #include <vector>
 
