@@ -16,6 +16,8 @@
 #include "algorithms/draw_window.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -37,6 +39,7 @@ class WindowRenderer {
                  const std::function<void(const DrawWindowProgress&)>& progress, const ViewSample& sample,
                  const ShadowPass* pivotBase)
       : s_(s), plan_(p), gl_(gl), lv_(p.levels), progress_(progress), faces_(findRefFaces(s)),
+        faceTriangles_(faces_.size()),
         shadows_(pivotBase ? ShadowPass(s, *pivotBase) : ShadowPass(s, p)), gl_scene_(s, gl, p.usesStencil()) {
     gl_scene_.setViewSample(sample);
     image_ = sample.image;
@@ -423,17 +426,67 @@ class WindowRenderer {
     }
     // "for (each non_ref object)": ref objects are drawn by draw_ref_objects
     // where this view recurses into them; where it does not (recursion_depth
-    // reached, or 0), they are drawn as their own colour, as the planner says
-    // (the paper is silent; leaving them out left holes of the clear colour).
+    // reached, or 0), they are drawn as their own colour (drawNotRecursedInto).
     const bool recurses = plan_.reflections && cam.level < plan_.recursionDepth;
-    for (const SceneObject& o : s_.objects) {
+    for (std::size_t i = 0; i < s_.objects.size(); ++i) {
+      const SceneObject& o = s_.objects[i];
       const SceneMaterial& m = s_.materials[static_cast<std::size_t>(o.material)];
-      if (recurses && isRefMaterial(m, s_.render)) continue;
+      const bool ref = isRefMaterial(m, s_.render);
+      if (recurses && ref) continue;
       gl_scene_.setMaterial(m, !light);
-      gl_scene_.drawTriangles(o.mesh);
+      if (ref) drawNotRecursedInto(cam, static_cast<int>(i), m);
+      else gl_scene_.drawTriangles(o.mesh);
     }
     if (cam.fog) gl_.disable(GL_FOG);
     if (light) ++counts_.lightPasses, reportProgress();
+  }
+
+  // Where the recursion stops (the deepest level, or recursion_depth 0).
+  // The 1994 paper's bottom level draws "each non_ref object" only
+  // (Figure 4, draw_normal_objects; §Recursion: "once the desired recursion
+  // level has been reached ... puts us back one level of recursion"): its
+  // ref faces are left out, their pixels keep whatever lies behind them, or
+  // the clear colour (black) where nothing does. MPR draws them as their
+  // own material, lit as opaque faces, the least wrong colour it has for
+  // them without another level (issue 43, defect 7), per face:
+  // - not the face this view looks through: it lies on the view's clip
+  //   plane, and drawn into its own view it covered everything seen
+  //   through it with its own colour (a lamp behind a pane at the deepest
+  //   level vanished);
+  // - glass has two sides, as in draw_ref_objects: a refracting face seen
+  //   from behind (every face of a glass box seen from inside it) is drawn
+  //   turned round, lit from the side the eye sees, where culling showed
+  //   what lay behind it or black. Mirrors stay one-sided.
+  void drawNotRecursedInto(const ViewCamera& cam, int object, const SceneMaterial& m) {
+    const Mesh& mesh = s_.objects[static_cast<std::size_t>(object)].mesh;
+    const std::vector<std::uint8_t>* skip = nullptr;
+    if (cam.throughFace >= 0 && faces_[static_cast<std::size_t>(cam.throughFace)].object == object)
+      skip = &trianglesOfFace(cam.throughFace);
+    if (skip) gl_scene_.drawTriangles(mesh, skip, false);
+    else gl_scene_.drawTriangles(mesh);
+    if (refracts(m.kind)) gl_scene_.drawTriangles(mesh, skip, true);
+  }
+
+  // The triangles of ref face f's object that lie in its plane (within the
+  // loader's planarity tolerance, 1e-4 of the face's extent, at least 1e-4):
+  // the face itself, and anything else of the object on the plane a view
+  // through it clips at. Computed once per face.
+  const std::vector<std::uint8_t>& trianglesOfFace(int f) {
+    std::vector<std::uint8_t>& marks = faceTriangles_[static_cast<std::size_t>(f)];
+    if (!marks.empty()) return marks;
+    const RefFace& face = faces_[static_cast<std::size_t>(f)];
+    const Mesh& mesh = s_.objects[static_cast<std::size_t>(face.object)].mesh;
+    double extent = 0.0;
+    for (const Vec3& p : face.polygon) extent = std::max(extent, glm::length(DVec3(p) - DVec3(face.polygon.front())));
+    const double tolerance = 1e-4 * std::max(1.0, extent);
+    marks.assign(mesh.triangles.size(), 0);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      bool inPlane = true;
+      for (const std::uint32_t v : mesh.triangles[t])
+        inPlane = inPlane && std::fabs(face.side(DVec3(mesh.positions[v]))) <= tolerance;
+      marks[t] = inPlane ? 1 : 0;
+    }
+    return marks;
   }
 
   // draw_face(ref_face): the face's visible pixels (depth test, no colour or
@@ -569,6 +622,7 @@ class WindowRenderer {
   StencilLevels lv_;
   std::function<void(const DrawWindowProgress&)> progress_;
   std::vector<RefFace> faces_;
+  std::vector<std::vector<std::uint8_t>> faceTriangles_;  // trianglesOfFace, per ref face
   ShadowPass shadows_;
   std::vector<ReflectedLight> refLights_;
   std::vector<std::string> path_;

@@ -148,6 +148,49 @@ RenderPlan planRender(const Scene& scene, bool cull) {
   return p;
 }
 
+namespace {
+// Where the recursion stops (issue 43, defect 7): the views of the deepest
+// level draw the specular faces they see as their own material instead of
+// looking through them (draw_window.cpp, drawNotRecursedInto), so a user
+// knows which objects to raise render.recursion_depth for. Every face but
+// the one a view looks through is one it may see: with culling off each of
+// the n (n-1)^(d-1) views of level d >= 1 has n - 1 of them (the camera's
+// view, at recursion_depth 0, all n).
+std::string depthRunsOutText(const RenderPlan& p, const Scene& s) {
+  if (p.refFaces == 0) return {};
+  const int deepest = p.recursionDepth;
+  const std::uint64_t faces = static_cast<std::uint64_t>(deepest == 0 ? p.refFaces : p.refFaces - 1);
+  const std::uint64_t views = p.predictedViewsAtLevel(deepest);
+  std::ostringstream o;
+  if (faces == 0 || views == 0) {
+    o << "  depth never runs out: the one specular face is looked through at level 1, and the view through it "
+         "sees no other\n";
+    return o.str();
+  }
+  // The objects whose faces are drawn so, in scene order, with their counts.
+  std::vector<std::pair<std::size_t, int>> objects;
+  for (const RefFace& f : findRefFaces(s)) {
+    const auto object = static_cast<std::size_t>(f.object);
+    if (objects.empty() || objects.back().first != object) objects.emplace_back(object, 0);
+    ++objects.back().second;
+  }
+  constexpr std::size_t kNamed = 8;
+  o << "  depth runs out at level " << deepest << " (render.recursion_depth " << s.render.recursionDepth << "): its "
+    << countText(views) << (views == 1 ? " view" : " views (culling off)") << (views == 1 ? " draws" : " draw")
+    << " up to " << faces << " specular face"
+    << (faces == 1 ? "" : "s") << (views == 1 ? "" : " each") << " as their own material, not looked through:";
+  for (std::size_t i = 0; i < objects.size() && i < kNamed; ++i) {
+    const SceneObject& obj = s.objects[objects[i].first];
+    const bool mirror = s.materials[static_cast<std::size_t>(obj.material)].kind == MaterialKind::Mirror;
+    o << (i ? ", " : " ") << '"' << obj.name << "\" (" << objects[i].second << (mirror ? " mirror" : " refracting")
+      << " face" << (objects[i].second == 1 ? "" : "s") << ")";
+  }
+  if (objects.size() > kNamed) o << " and " << objects.size() - kNamed << " more objects";
+  o << "; raise render.recursion_depth to look through them\n";
+  return o.str();
+}
+}  // namespace
+
 std::string describePlan(const RenderPlan& p, const Scene& s) {
   std::ostringstream o;
   o << "scene: " << s.file << " (" << s.objects.size() << " objects, " << s.triangleCount() << " triangles, "
@@ -186,6 +229,7 @@ std::string describePlan(const RenderPlan& p, const Scene& s) {
   if (p.reflections)
     o << "  draw_ref_objects: " << p.refFaces << " faces, recursion depth " << p.recursionDepth
       << (p.shadows ? ", shadows in views up to level " + std::to_string(p.shadowDepth) : std::string()) << "\n";
+  o << depthRunsOutText(p, s);
   for (const std::string& n : p.notes) o << "  left out: " << n << "\n";
   o << "predicted (culling off):\n";
   o << "  views (scene renderings): " << countText(p.predictedViews());

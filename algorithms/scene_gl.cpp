@@ -137,6 +137,25 @@ void SceneGL::drawTriangles(const Mesh& mesh) {
   gl_.end();
 }
 
+void SceneGL::drawTriangles(const Mesh& mesh, const std::vector<std::uint8_t>* skip, bool turned) {
+  const auto skipped = [&](std::size_t t) { return skip && (*skip)[t] != 0; };
+  bool any = false;
+  for (std::size_t t = 0; t < mesh.triangles.size() && !any; ++t) any = !skipped(t);
+  if (!any) return;
+  gl_.begin(GL_TRIANGLES);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (skipped(t)) continue;
+    const auto& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = tri[static_cast<std::size_t>(turned ? (3 - k) % 3 : k)];
+      const Vec3 n = turned ? -mesh.normals[v] : mesh.normals[v], p = mesh.positions[v];
+      gl_.normal3f(n.x, n.y, n.z);
+      gl_.vertex3f(p.x, p.y, p.z);
+    }
+  }
+  gl_.end();
+}
+
 void SceneGL::drawPolygon(const RefFace& face, bool withNormal, bool fromBehind) {
   // From behind (glass has two sides), the polygon turned round: reversed
   // corners, so it stays front-facing under GL_CULL_FACE, and the normal

@@ -1,6 +1,9 @@
 #pragma once
 // The GL plumbing of the 1994 algorithm: view set-up, lights, materials and
 // geometry, as typed GL calls. Figure 4's routines (draw_window.cpp) call it.
+#include <cstdint>
+#include <vector>
+
 #include "algorithms/image_samples.hpp"
 #include "algorithms/ref_face.hpp"
 #include "algorithms/view_camera.hpp"
@@ -33,6 +36,12 @@ class SceneGL {
   void setFullMaterial(const SceneMaterial& m);
   void setMaterial(const SceneMaterial& m, bool ambientPass);
   void drawTriangles(const Mesh& mesh);
+  // The mesh's triangles but those `skip` marks (one entry per triangle;
+  // null: none), turned round when `turned`: reversed corners, so a
+  // triangle seen from behind is front-facing under GL_CULL_FACE (and one
+  // seen from the front is culled), and negated normals, so the light on
+  // the side the eye sees lights it. Nothing is drawn when all are skipped.
+  void drawTriangles(const Mesh& mesh, const std::vector<std::uint8_t>* skip, bool turned);
   void drawPolygon(const RefFace& face, bool withNormal, bool fromBehind = false);
   double aspect() const;
 
