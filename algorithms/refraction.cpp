@@ -46,6 +46,7 @@ RefractedView slabView(const ViewCamera& outer, const Camera&, const RefFace& fa
   ViewCamera v = outer;
   v.level = outer.level + 1;
   v.throughFace = faceIndex;
+  v.near = 0.0;  // the camera's: a mirror's bound (mirrorNear) does not hold once the view is bent or shifted
   v.clip = true;
   v.clipPlane = DVec4(-n, glm::dot(n, face.centre));  // keep what lies beyond the face
   // The camera moved by the shift: the world moved by minus it.
@@ -104,6 +105,7 @@ std::optional<RefractedView> refractedView(const ViewCamera& outer, const Camera
   ViewCamera v = outer;
   v.level = outer.level + 1;
   v.throughFace = faceIndex;
+  v.near = 0.0;  // the camera's: a mirror's bound (mirrorNear) does not hold once the view is bent or shifted
   v.clip = true;
   v.clipPlane = DVec4(-n, glm::dot(n, face.centre));  // keep what lies beyond the face
   if (ior != 1.0) {
