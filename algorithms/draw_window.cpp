@@ -43,7 +43,7 @@ class WindowRenderer {
         shadows_(pivotBase ? ShadowPass(s, *pivotBase) : ShadowPass(s, p)), gl_scene_(s, gl, p.usesStencil()) {
     gl_scene_.setViewSample(sample);
     image_ = sample.image;
-    if (p.reflectedLights > 0) refLights_ = reflectedLights(s, faces_);
+    if (p.reflectedLights > 0) refLights_ = reflectedLights(s, faces_, image_);
     counts_.viewsAtLevel.assign(static_cast<std::size_t>(p.recursionDepth) + 1, 0);
   }
 

@@ -56,9 +56,9 @@ int accumulatedImages(const Scene& s) {
   return std::max({s.render.antialiasSamples, lightSamples, frosted});
 }
 
-DVec2 frostedShear(double m, int samples, int i) {
+DVec2 frostedShear(double m, int samples, int i, int base) {
   if (samples <= 1 || !(m > 0.0)) return DVec2(0.0);
-  const DVec2 u = tablePoint(i % samples, samples, 5);
+  const DVec2 u = tablePoint(i % samples, samples, base);
   // Box-Muller: u.x in (0, 1) (the table's cells are centred), a normal pair.
   const double r = std::sqrt(-2.0 * std::log(u.x)), a = 2.0 * std::numbers::pi * u.y;
   return m * r * DVec2(std::cos(a), std::sin(a));

@@ -59,7 +59,10 @@ int darknessLevelSamples(const Scene& scene, const PointLight& light);
 // third table (base-5 radical inverse) through Box and Muller's map. The
 // face's view is sheared by x' = x + X z, y' = y + Y z in the face's frame
 // (z along its normal), so what lies farther behind the face blurs more.
-DVec2 frostedShear(double m, int samples, int i);
+// The light a frosted face passes on is sheared alike from a table of its own
+// (base 7: the view's and the light's scattering are independent events).
+DVec2 frostedShear(double m, int samples, int i, int base = 5);
+inline constexpr int kFrostedLightTable = 7;
 
 // The shear as a world-space matrix: the face's frame F (origin `centre`,
 // z along `normal`) times the shear times F's inverse ("premultiplied by

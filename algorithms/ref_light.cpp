@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "algorithms/image_samples.hpp"
 #include "algorithms/light_path.hpp"
 #include "algorithms/shadow_geometry.hpp"
 #include "scene/slab_refraction.hpp"
@@ -112,7 +113,7 @@ bool whollyOnSide(const Mesh& mesh, const RefFace& f, double sign, double touch)
 
 }  // namespace
 
-std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces) {
+std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces, int image) {
   std::vector<ReflectedLight> out;
   const BoundingSphere bounds = sceneBoundingSphere(scene);
   // Touching a face's plane: within float rounding of the scene's size.
@@ -121,7 +122,24 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
     const std::size_t k = path.faces.size();
     const RefFace& f = faces[static_cast<std::size_t>(path.faces.back())];
     const PointLight& light = scene.lights[static_cast<std::size_t>(path.light)];
-    const DVec3 ref = path.virtualLight();
+    // Frosted glass scatters the light it passes on as it scatters the view
+    // through it (1997 §3, "light scattering through the translucent
+    // material"): the light beyond the face is sheared about its normal by
+    // this image's stochastic shear, so the accumulated images soften the
+    // edges of its light volume and of the shadows in it. The shear fixes
+    // the face's plane, so it maps the volume from the virtual light
+    // through the face onto the volume from the sheared virtual light: every
+    // point this light is built from is sheared (the mapped
+    // casters' images too); the casters beyond the face are not, their
+    // shadows from the sheared light are those of the sheared rays.
+    const SceneMaterial& lastMaterial =
+        scene.materials[static_cast<std::size_t>(scene.objects[static_cast<std::size_t>(f.object)].material)];
+    const DMat4 scatter = f.kind == MaterialKind::Frosted && scene.render.frosted
+                              ? shearAboutFace(f.centre, f.normal,
+                                               frostedShear(f.shear, lastMaterial.samples, image, kFrostedLightTable))
+                              : DMat4(1.0);
+    const auto sheared = [&scatter](DVec3 p) { return DVec3(scatter * DVec4(p, 1.0)); };
+    const DVec3 ref = sheared(path.virtualLight());
     ReflectedLight r;
     r.light = path.light;
     r.face = path.faces.back();
@@ -141,20 +159,25 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
     for (std::size_t i = 0; i + 1 < k; ++i) {
       const std::string& name = scene.objects[static_cast<std::size_t>(
           faces[static_cast<std::size_t>(path.faces[i])].object)].name;
-      r.lightVolumes.push_back(objectShadowVolume(
-          polygonFacing(path.apertures[i], name + " (light volume, carried)", ref), r.virtualLight.position, bounds));
+      std::vector<DVec3> aperture = path.apertures[i];
+      for (DVec3& p : aperture) p = sheared(p);
+      r.lightVolumes.push_back(objectShadowVolume(polygonFacing(aperture, name + " (light volume, carried)", ref),
+                                                  r.virtualLight.position, bounds));
     }
-    const DVec3 shift = leavingShift(f, path.lights[k - 1], ref);
-    r.lightVolumes.push_back(objectShadowVolume(faceFacing(f, specular.name + " (light volume)", ref, shift),
-                                                r.virtualLight.position, bounds));
+    SceneObject lastFace =
+        faceFacing(f, specular.name + " (light volume)", ref, leavingShift(f, path.lights[k - 1], path.virtualLight()));
+    for (Vec3& p : lastFace.mesh.positions) p = Vec3(sheared(DVec3(p)));
+    r.lightVolumes.push_back(objectShadowVolume(lastFace, r.virtualLight.position, bounds));
     // A slab passes light on only where it stands in the light's way: a ray
     // that enters near an edge and is shifted past it leaves by the slab's
     // side, not its far face. So the shifted light volume is cut to the
     // face's own shadow from the light before it, and no sliver beside the
     // slab's shadow gets the direct and the passed-on light both (1 + T).
-    if (f.refracts() && f.thickness > 0.0)
-      r.lightVolumes.push_back(objectShadowVolume(faceFacing(f, specular.name + " (its own shadow)", path.lights[k - 1]),
-                                                  Vec3(path.lights[k - 1]), bounds));
+    if (f.refracts() && f.thickness > 0.0) {
+      const DVec3 before = sheared(path.lights[k - 1]);
+      r.lightVolumes.push_back(
+          objectShadowVolume(faceFacing(f, specular.name + " (its own shadow)", before), Vec3(before), bounds));
+    }
     for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
       const SceneObject& o = scene.objects[oi];
       const ShadowRole role = shadowRole(o, scene);
@@ -189,7 +212,7 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
         SceneObject image = o;
         image.name = o.name + (k == 1 ? (fi.kind == MaterialKind::Mirror ? " (mirror image)" : " (through the face)")
                                       : " (carried along the light path)");
-        for (Vec3& p : image.mesh.positions) p = Vec3(carryAlongPath(path, faces, i, DVec3(p)));
+        for (Vec3& p : image.mesh.positions) p = Vec3(sheared(carryAlongPath(path, faces, i, DVec3(p))));
         if (carryTurnsWinding(path, faces, i))
           for (auto& t : image.mesh.triangles) std::swap(t[1], t[2]);  // a reflection turns the winding
         VolumeGeometry v = casterShadowVolume(image, role, r.virtualLight.position, bounds);

@@ -64,7 +64,8 @@ DVec3 transferThroughFace(const RefFace& face, DVec3 light, DVec3 ref, DVec3 p);
 
 // Every light path with a virtual light (lightPaths, up to
 // lightBounces(render) faces): light by light, each first face followed by
-// the paths that go on from it.
-std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces);
+// the paths that go on from it. `image`: which image of an accumulation,
+// for the shear of the light a frosted face passes on (1997 §3).
+std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vector<RefFace>& faces, int image = 0);
 
 }  // namespace mpr

@@ -113,8 +113,8 @@ double refractedSpread(const SpecularFace& face, DVec3 s, DVec3 p, DVec3 x, doub
 
 // The path through a chain for one point of the light (centre c); `spread`
 // gets the refracted light's spreading where asked for (else 1).
-bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, double r, DVec2 disc, PathPoints& out,
-               double* spread) {
+bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, double r, DVec2 disc, DVec2 scatter,
+               PathPoints& out, double* spread) {
   if (spread) *spread = 1.0;
   const int n = static_cast<int>(chain.faces.size()), j = chain.refracting;
   out.count = 0;
@@ -131,19 +131,30 @@ bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, d
   const DVec3 sImage = discPoint(reflectThrough(lp, chain, 0, j, 1, c), r, disc, face.centre);
   // A point on the face itself (its own lit colour) gets no light through it.
   if (!(std::fabs(face.side(pImage)) > kSurfaceEpsilon) || !(std::fabs(face.side(sImage)) > kSurfaceEpsilon)) return false;
+  // Frosted glass scatters the light it passes on as it scatters the view
+  // through it (ray_tracer.cpp; 1997 §3): by reciprocity the point is lit as
+  // if it stood moved along the face's tangents by shear times its distance
+  // behind the face times a normal pair (one per light point and pixel
+  // sample). The crossing is solved for that point; the last leg still ends
+  // at the point itself.
+  DVec3 target = pImage;
+  if (face.shear > 0.0) {
+    const DVec3 u = perpendicular(face.normal), v = glm::cross(face.normal, u);
+    target = pImage + face.shear * std::fabs(face.side(pImage)) * (scatter.x * u + scatter.y * v);
+  }
   if (face.thickness > 0.0) {
     // A slab (in-out refraction): the light enters at x and goes on parallel
     // to itself from x + shift (no spreading: every ray is shifted alike to
     // first order; the spread stays 1).
-    const std::optional<DVec3> x = slabCrossing(face, sImage, pImage);
+    const std::optional<DVec3> x = slabCrossing(face, sImage, target);
     if (!x || !face.contains(*x)) return false;
     // And only where the slab stands in the light's way (the straight ray
     // crosses the face too): a ray shifted past the slab's edge leaves by
     // its side, not its far face (as the pipeline's light volume is cut to
     // the slab's own shadow, algorithms/ref_light.cpp).
     {
-      const double ss = face.side(sImage), sp = face.side(pImage);
-      if (!face.contains(sImage + (pImage - sImage) * (ss / (ss - sp)))) return false;
+      const double ss = face.side(sImage), sp = face.side(target);
+      if (!face.contains(sImage + (target - sImage) * (ss / (ss - sp)))) return false;
     }
     const DVec3 exit = *x + slabShift(glm::normalize(*x - sImage), face.normal, face.ior, face.thickness);
     PathPoints toPoint;
@@ -153,7 +164,7 @@ bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, d
     out.push(*x);
     return unfold(lp, chain, j - 1, -1, -1, *x, sImage, out);
   }
-  const std::optional<DVec3> x = snellCrossing(face, sImage, pImage);
+  const std::optional<DVec3> x = snellCrossing(face, sImage, target);
   if (!x || !face.contains(*x)) return false;
   PathPoints toPoint;
   if (!unfold(lp, chain, j + 1, n, 1, *x, pImage, toPoint)) return false;
@@ -162,7 +173,7 @@ bool chainPath(const LightPaths& lp, const FaceChain& chain, DVec3 p, DVec3 c, d
   if (!unfold(lp, chain, j - 1, -1, -1, *x, sImage, out)) return false;
   // Mirrors are isometries: the spreading is the refracting face's alone,
   // between the unfolded light and point.
-  if (spread) *spread = refractedSpread(face, sImage, pImage, *x, glm::length(*x - sImage) + glm::length(pImage - *x));
+  if (spread) *spread = refractedSpread(face, sImage, target, *x, glm::length(*x - sImage) + glm::length(target - *x));
   return true;
 }
 
@@ -220,8 +231,10 @@ DVec3 directLight(const Scene& scene, const Bvh& bvh, const LightPaths& lp, cons
       // Jacobian) that the pipeline's virtual lights lack.
       double spread = 1.0;
       double* wantSpread = model == ShadingModel::Physical ? &spread : nullptr;
+      const DVec2 scatter = sampling.sampler ? sampling.sampler->lightScatter(sampling.sample, k, sampling.depth) : DVec2(0.0);
       for (const FaceChain& chain : lp.chains[l])
-        if (chainPath(lp, chain, at.position, centre, r, disc, path, wantSpread)) add(light, colour * (chain.weight * spread));
+        if (chainPath(lp, chain, at.position, centre, r, disc, scatter, path, wantSpread))
+          add(light, colour * (chain.weight * spread));
     }
   }
   return sum;

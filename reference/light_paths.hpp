@@ -17,7 +17,10 @@
 //   image L' (L'' = image of L' ...) is reached in a straight line from the
 //   point across the faces. At most one refracting face a chain: its
 //   crossing solves Snell's law between the unfolded light and the unfolded
-//   point (snell.hpp). Frosted faces pass light as smooth ones would.
+//   point (snell.hpp). A frosted face scatters what it passes on as it
+//   scatters the view through it: the crossing is solved for the point moved
+//   along the face by shear times its distance behind it times a normal
+//   pair, one per light point and pixel sample (1997 §3's stochastic shear).
 // - Attenuation is GL's, by the unfolded path length (the sum of the legs).
 //   The spreading of the bent rays (a caustic's Jacobian: L^2 dOmega/dA,
 //   by finite differences of the Snell crossing) multiplies it in the

@@ -30,12 +30,6 @@ DVec3 shadingNormal(const Scene& s, const BvhTriangle& tri, const Hit& h) {
   return len > 0.0 ? n / len : glm::normalize(glm::cross(tri.e1, tri.e2));
 }
 
-// A unit vector perpendicular to unit n.
-DVec3 perpendicular(DVec3 n) {
-  const DVec3 a = std::fabs(n.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
-  return glm::normalize(glm::cross(n, a));
-}
-
 }  // namespace
 
 Traced trace(const TraceContext& c, const Ray& ray, double tMin, double tMax, int depth, double weight,

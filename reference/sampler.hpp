@@ -44,7 +44,14 @@ inline void gridOf(std::uint32_t n, std::uint32_t& rows, std::uint32_t& cols) {
 
 // Dimensions of a sample path: the pixel position, then per specular depth
 // its light-disc strata and its frosted-glass perturbation.
-enum : std::uint32_t { kDimPixel = 0, kDimLight = 0x100, kDimFrost = 0x10000, kDimLens = 0x20000, kDimsPerDepth = 0x40 };
+enum : std::uint32_t {
+  kDimPixel = 0,
+  kDimLight = 0x100,
+  kDimFrost = 0x10000,
+  kDimLens = 0x20000,
+  kDimFrostLight = 0x30000,
+  kDimsPerDepth = 0x40
+};
 
 struct PixelSampler {
   std::uint32_t x = 0, y = 0, samples = 1;
@@ -89,11 +96,21 @@ struct PixelSampler {
   }
 
   // Two independent standard normal values for sample i (Box-Muller).
-  DVec2 gaussian(std::uint32_t i, std::uint32_t depth) const {
-    const double u1 = 1.0 - uniform(i, kDimFrost + 2 * depth), u2 = uniform(i, kDimFrost + 2 * depth + 1);
+  DVec2 gaussian(std::uint32_t i, std::uint32_t depth) const { return normalPair(i, kDimFrost + 2 * depth); }
+
+  // The pair that scatters light point k's passage through a frosted face,
+  // for sample i at specular depth `depth` (independent of the view's).
+  DVec2 lightScatter(std::uint32_t i, std::uint32_t k, std::uint32_t depth) const {
+    return normalPair(i, kDimFrostLight + depth * kDimsPerDepth + 2 * (k % (kDimsPerDepth / 2)));
+  }
+
+ private:
+  DVec2 normalPair(std::uint32_t i, std::uint32_t dim) const {
+    const double u1 = 1.0 - uniform(i, dim), u2 = uniform(i, dim + 1);
     const double r = std::sqrt(-2.0 * std::log(u1)), a = 6.283185307179586 * u2;
     return {r * std::cos(a), r * std::sin(a)};
   }
+ public:
 };
 
 // Shirley and Chiu's concentric map of the unit square onto the unit disc:

@@ -2,6 +2,7 @@
 // Snell's law for the reference, both ways round: the direction a ray takes
 // through an interface, and the point where light from A must cross a plane
 // to reach B.
+#include <cmath>
 #include <optional>
 
 #include "util/vecmath.hpp"
@@ -13,6 +14,13 @@ namespace mpr {
 // the incident side (dot(d, n) < 0), eta = n_incident / n_transmitted;
 // nothing past the critical angle (total internal reflection).
 std::optional<DVec3> refractDirection(DVec3 d, DVec3 n, double eta);
+
+// A unit vector perpendicular to unit n: with cross(n, it), the tangents a
+// rough face (frosted glass, a glossy mirror) tilts directions along.
+inline DVec3 perpendicular(DVec3 n) {
+  const DVec3 a = std::fabs(n.x) < 0.9 ? DVec3(1.0, 0.0, 0.0) : DVec3(0.0, 1.0, 0.0);
+  return glm::normalize(glm::cross(n, a));
+}
 
 // The point X on the face's plane where a path a -> X -> b obeys Snell's law
 // (n_a sin(theta_a) = n_b sin(theta_b), in the plane of incidence spanned by

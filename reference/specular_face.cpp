@@ -35,6 +35,7 @@ std::vector<SpecularFace> findSpecularFaces(const Scene& scene) {
       f.weight = m.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
       f.ior = m.ior;
       f.thickness = m.thickness;
+      if (m.kind == MaterialKind::Frosted) f.shear = m.shear;
       DVec3 newell(0.0), centre(0.0);
       for (std::size_t i = 0; i < poly.size(); ++i) {
         const DVec3 a(obj.mesh.positions[poly[i]]), b(obj.mesh.positions[poly[(i + 1) % poly.size()]]);

@@ -22,6 +22,7 @@ struct SpecularFace {
   double weight = 1.0;         // reflectance (mirror) or transmittance
   double ior = 1.0;
   double thickness = 0.0;      // > 0: a slab, rays shifted, not turned (scene/slab_refraction.hpp)
+  double shear = 0.0;          // frosted: the Gaussian slope its transmission scatters by (1997 §3)
   int dropAxis = 2;            // the normal's largest axis, dropped for 2-D tests
 
   bool mirror() const { return kind == MaterialKind::Mirror; }
