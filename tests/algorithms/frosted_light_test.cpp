@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "algorithms/scene_renderer.hpp"
+#include "tests/algorithms/frosted_pane_scene.hpp"
 #include "scene/scene_loader.hpp"
 
 // A namespace of its own: the suite is compiled in batches (unity builds).
@@ -25,19 +26,7 @@ namespace {
 
 constexpr int kWidth = 64, kHeight = 48, kLastFloorRow = 41;
 
-std::string scene(const std::string& pane) {
-  return R"(
-camera: {position: [0, 3.2, 3.2], look_at: [0, 0, 0], fov: 50, near: 0.1, far: 20}
-ambient: [0.1, 0.1, 0.1]
-lights: [{position: [0.3, 3.0, -0.5]}]
-materials:
-  pane: )" + pane + R"(
-objects:
-  - {primitive: plane, scale: [6, 1, 6]}
-  - {primitive: quad, translate: [0, 1.5, -1.2], rotate: [-90, 1, 0, 0], scale: [1.2, 1.2, 1], material: pane}
-render: {width: 64, height: 48}
-)";
-}
+std::string scene(const std::string& pane) { return test::frostedPaneScene(pane); }
 
 std::vector<Rgba8> render(const std::string& text) {
   const Scene s = loadSceneText(text, "frosted-light.yaml");

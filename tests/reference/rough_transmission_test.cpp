@@ -7,24 +7,13 @@
 // 26..32 blurred by a standard deviation of 0.225, the patch's middle (row
 // 36, column 32) 0.9 and more from every edge (4 standard deviations).
 #include "tests/reference/reference_test_support.hpp"
+#include "tests/algorithms/frosted_pane_scene.hpp"
 
 // A namespace of its own: the suite is compiled in batches (unity builds).
 namespace mpr::rough_transmission_test {
 namespace {
 
-std::string scene(const std::string& pane) {
-  return R"(
-camera: {position: [0, 3.2, 3.2], look_at: [0, 0, 0], fov: 50, near: 0.1, far: 20}
-ambient: [0.1, 0.1, 0.1]
-lights: [{position: [0.3, 3.0, -0.5]}]
-materials:
-  pane: )" + pane + R"(
-objects:
-  - {primitive: plane, scale: [6, 1, 6]}
-  - {primitive: quad, translate: [0, 1.5, -1.2], rotate: [-90, 1, 0, 0], scale: [1.2, 1.2, 1], material: pane}
-render: {width: 64, height: 48}
-)";
-}
+std::string scene(const std::string& pane) { return test::frostedPaneScene(pane); }
 
 TEST(RoughTransmission, AFrostedPaneScattersTheLightItPasses) {
   const ReferenceImage clear = test::traceText(
