@@ -462,8 +462,7 @@ class WindowRenderer {
     const std::vector<std::uint8_t>* skip = nullptr;
     if (cam.throughFace >= 0 && faces_[static_cast<std::size_t>(cam.throughFace)].object == object)
       skip = &trianglesOfFace(cam.throughFace);
-    if (skip) gl_scene_.drawTriangles(mesh, skip, false);
-    else gl_scene_.drawTriangles(mesh);
+    gl_scene_.drawTriangles(mesh, skip);
     if (refracts(m.kind)) gl_scene_.drawTriangles(mesh, skip, true);
   }
 

@@ -132,8 +132,8 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
     // point this light is built from is sheared (the mapped
     // casters' images too); the casters beyond the face are not, their
     // shadows from the sheared light are those of the sheared rays.
-    const SceneMaterial& lastMaterial =
-        scene.materials[static_cast<std::size_t>(scene.objects[static_cast<std::size_t>(f.object)].material)];
+    const SceneObject& specular = scene.objects[static_cast<std::size_t>(f.object)];
+    const SceneMaterial& lastMaterial = scene.materials[static_cast<std::size_t>(specular.material)];
     const DMat4 scatter = f.kind == MaterialKind::Frosted && scene.render.frosted
                               ? shearAboutFace(f.centre, f.normal,
                                                frostedShear(f.shear, lastMaterial.samples, image, kFrostedLightTable))
@@ -153,7 +153,6 @@ std::vector<ReflectedLight> reflectedLights(const Scene& scene, const std::vecto
           scene.materials[static_cast<std::size_t>(scene.objects[static_cast<std::size_t>(pf.object)].material)];
       r.virtualLight.color *= pf.kind == MaterialKind::Mirror ? m.reflectance : m.transmittance;
     }
-    const SceneObject& specular = scene.objects[static_cast<std::size_t>(f.object)];
     // The constituent light volumes (1997 §4.2): the earlier faces carried
     // into this light's space, then the last face (a slab's shifted).
     for (std::size_t i = 0; i + 1 < k; ++i) {

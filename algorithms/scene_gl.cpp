@@ -126,17 +126,6 @@ void SceneGL::setMaterial(const SceneMaterial& m, bool ambientPass) {
   }
 }
 
-void SceneGL::drawTriangles(const Mesh& mesh) {
-  gl_.begin(GL_TRIANGLES);
-  for (const auto& t : mesh.triangles)
-    for (std::uint32_t v : t) {
-      const Vec3 n = mesh.normals[v], p = mesh.positions[v];
-      gl_.normal3f(n.x, n.y, n.z);
-      gl_.vertex3f(p.x, p.y, p.z);
-    }
-  gl_.end();
-}
-
 void SceneGL::drawTriangles(const Mesh& mesh, const std::vector<std::uint8_t>* skip, bool turned) {
   const auto skipped = [&](std::size_t t) { return skip && (*skip)[t] != 0; };
   bool any = false;

@@ -35,13 +35,12 @@ class SceneGL {
   // or a light pass's (diffuse, specular).
   void setFullMaterial(const SceneMaterial& m);
   void setMaterial(const SceneMaterial& m, bool ambientPass);
-  void drawTriangles(const Mesh& mesh);
   // The mesh's triangles but those `skip` marks (one entry per triangle;
   // null: none), turned round when `turned`: reversed corners, so a
   // triangle seen from behind is front-facing under GL_CULL_FACE (and one
   // seen from the front is culled), and negated normals, so the light on
   // the side the eye sees lights it. Nothing is drawn when all are skipped.
-  void drawTriangles(const Mesh& mesh, const std::vector<std::uint8_t>* skip, bool turned);
+  void drawTriangles(const Mesh& mesh, const std::vector<std::uint8_t>* skip = nullptr, bool turned = false);
   void drawPolygon(const RefFace& face, bool withNormal, bool fromBehind = false);
   double aspect() const;
 

@@ -110,7 +110,6 @@ struct PixelSampler {
     const double r = std::sqrt(-2.0 * std::log(u1)), a = 6.283185307179586 * u2;
     return {r * std::cos(a), r * std::sin(a)};
   }
- public:
 };
 
 // Shirley and Chiu's concentric map of the unit square onto the unit disc:

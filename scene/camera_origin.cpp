@@ -10,19 +10,16 @@ DVec3 loadingOrigin(DVec3 eye) {
   return far > kFarFromOrigin ? eye : DVec3(0.0);
 }
 
-void moveOrigin(Scene& s, DVec3 to) {
-  const DVec3 shift = to - s.origin;
+void moveOriginToCamera(Scene& s) {
+  if (s.camera.position == Vec3(0.0f)) return;
+  const DVec3 shift(s.camera.position);
   const auto relative = [&shift](Vec3 p) { return Vec3(DVec3(p) - shift); };
   for (SceneObject& o : s.objects)
     for (Vec3& p : o.mesh.positions) p = relative(p);
   s.camera.position = relative(s.camera.position);
   s.camera.lookAt = relative(s.camera.lookAt);
   for (PointLight& l : s.lights) l.position = relative(l.position);
-  s.origin = to;
-}
-
-void moveOriginToCamera(Scene& s) {
-  if (s.camera.position != Vec3(0.0f)) moveOrigin(s, s.origin + DVec3(s.camera.position));
+  s.origin += shift;
 }
 
 }  // namespace mpr

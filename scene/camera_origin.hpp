@@ -19,13 +19,10 @@ inline constexpr double kFarFromOrigin = 1024.0;
 // The origin the loader gives a scene whose camera the file puts at `eye`.
 DVec3 loadingOrigin(DVec3 eye);
 
-// The scene with its origin moved to `to` (world coordinates): every
-// position re-expressed relative to it, each difference taken in double and
-// rounded once. Directions (normals, up) do not change.
-void moveOrigin(Scene& s, DVec3 to);
-
-// The scene as the renderer draws it: relative to its camera, which then
-// stands at (0, 0, 0) (unchanged when it already does).
+// The scene as the renderer draws it: its origin moved to its camera,
+// which then stands at (0, 0, 0) (unchanged when it already does); every
+// position re-expressed relative to it, each difference taken in double
+// and rounded once. Directions (normals, up) do not change.
 void moveOriginToCamera(Scene& s);
 
 }  // namespace mpr

@@ -24,6 +24,7 @@
 #include "algorithms/neighbourhood_difference.hpp"
 #include "algorithms/scene_renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "tests/algorithms/rendered_colours.hpp"
 #include "util/input_file.hpp"
 
 // A namespace of its own: the suite is compiled in batches (unity builds).
@@ -66,12 +67,7 @@ std::string movedScene(const std::string& text, DVec3 t) {
 }
 
 std::vector<Rgba8> render(const std::string& text, const std::string& file) {
-  const Scene scene = loadSceneText(text, file, {"render.width=" + std::to_string(kWidth),
-                                                 "render.height=" + std::to_string(kHeight)});
-  GLContext gl(scene.render.width, scene.render.height, *findProfile(scene.render.profile));
-  GLCommandStream stream(gl, false);
-  renderScene(scene, stream);
-  return gl.framebuffer().colorData();
+  return test::renderedColours(text, file, {"render.width=" + std::to_string(kWidth), "render.height=" + std::to_string(kHeight)});
 }
 
 class SampleFarFromOrigin : public ::testing::TestWithParam<const char*> {};

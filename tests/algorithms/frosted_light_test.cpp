@@ -16,9 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/scene_renderer.hpp"
 #include "tests/algorithms/frosted_pane_scene.hpp"
-#include "scene/scene_loader.hpp"
+#include "tests/algorithms/rendered_colours.hpp"
 
 // A namespace of its own: the suite is compiled in batches (unity builds).
 namespace mpr::frosted_light_test {
@@ -28,13 +27,7 @@ constexpr int kWidth = 64, kHeight = 48, kLastFloorRow = 41;
 
 std::string scene(const std::string& pane) { return test::frostedPaneScene(pane); }
 
-std::vector<Rgba8> render(const std::string& text) {
-  const Scene s = loadSceneText(text, "frosted-light.yaml");
-  GLContext gl(s.render.width, s.render.height, *findProfile(s.render.profile));
-  GLCommandStream stream(gl, false);
-  renderScene(s, stream);
-  return gl.framebuffer().colorData();
-}
+std::vector<Rgba8> render(const std::string& text) { return test::renderedColours(text, "frosted-light.yaml"); }
 
 TEST(FrostedLight, PassesTheLightScatteredAsItsView) {
   const std::vector<Rgba8> clear = render(scene(

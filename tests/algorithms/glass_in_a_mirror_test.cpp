@@ -10,8 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/scene_renderer.hpp"
-#include "scene/scene_loader.hpp"
+#include "tests/algorithms/rendered_colours.hpp"
 
 // A namespace of its own: the suite is compiled in batches (unity builds).
 namespace mpr::glass_in_a_mirror_test {
@@ -38,13 +37,7 @@ std::string scene(const std::string& camera, bool mirror) {
          (mirror ? "  - {name: mirror, primitive: quad, scale: [8, 8, 1], material: mirror}\n" : "") + kBehindTheCamera;
 }
 
-std::vector<Rgba8> render(const std::string& text) {
-  const Scene s = loadSceneText(text, "glass-in-a-mirror.yaml");
-  GLContext gl(s.render.width, s.render.height, *findProfile(s.render.profile));
-  GLCommandStream stream(gl, false);
-  renderScene(s, stream);
-  return gl.framebuffer().colorData();
-}
+std::vector<Rgba8> render(const std::string& text) { return test::renderedColours(text, "glass-in-a-mirror.yaml"); }
 
 TEST(GlassInAMirror, IsTheMirroredCamerasViewThroughIt) {
   // The mirror (8 x 8 at 5, fov 45) fills the window.
